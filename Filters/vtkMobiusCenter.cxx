@@ -1,0 +1,114 @@
+#include "vtkMobiusCenter.h"
+
+#include "MobiusCentering.h"
+#include "vtkSphericalMapData.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+
+vtkStandardNewMacro(vtkMobiusCenter);
+
+//------------------------------------------------------------------------------
+vtkMobiusCenter::vtkMobiusCenter() = default;
+
+//------------------------------------------------------------------------------
+int vtkMobiusCenter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "Missing input or output polydata.");
+    return 0;
+  }
+
+  mobius::Points points;
+  mobius::Triangles triangles;
+  mobius::Vector areas;
+  std::string error = mobius::vtk::ExtractPoints(input, points);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractTriangles(input, triangles);
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::CheckOnUnitSphere(points);
+  }
+  if (error.empty() && triangles.rows() > 0)
+  {
+    error = mobius::vtk::ExtractSurfaceAreas(input, areas);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot center: " << error << ".");
+    return 0;
+  }
+
+  mobius::MobiusCenteringParameters parameters;
+  parameters.Tolerance = this->Tolerance;
+  parameters.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+  mobius::MobiusCenteringResult result;
+  auto progress = [this](double fraction) {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  };
+  if (!mobius::CenterSphericalMap(points, triangles, areas, parameters, result, progress))
+  {
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Centering failed: " << result.Error << ".");
+    }
+    return 0;
+  }
+  if (!result.Converged)
+  {
+    vtkWarningMacro(<< "Centering stopped after " << result.NumberOfIterations
+                    << " iterations with |mu| = " << result.CenterOfMassNorm
+                    << " above the tolerance " << this->Tolerance << ".");
+  }
+
+  output->ShallowCopy(input);
+  mobius::vtk::SetPoints(output, points);
+
+  vtkFieldData* fieldData = output->GetFieldData();
+  mobius::vtk::SetFieldValue(fieldData, "CenterOfMassNorm", result.CenterOfMassNorm);
+  mobius::vtk::SetFieldValue(
+    fieldData, "InitialCenterOfMassNorm", result.InitialCenterOfMassNorm);
+  mobius::vtk::SetFieldValue(fieldData, "CenteringIterations", result.NumberOfIterations);
+  double lorentz[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      lorentz[4 * r + c] = result.LorentzTransform(r, c);
+    }
+  }
+  mobius::vtk::SetFieldValues(fieldData, "MobiusTransform", lorentz, 16);
+
+  vtkNew<vtkDoubleArray> centers;
+  centers->SetName("InversionCenters");
+  centers->SetNumberOfComponents(3);
+  for (const auto& c : result.InversionCenters)
+  {
+    centers->InsertNextTuple3(c.x(), c.y(), c.z());
+  }
+  fieldData->RemoveArray("InversionCenters");
+  fieldData->AddArray(centers);
+
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkMobiusCenter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+}

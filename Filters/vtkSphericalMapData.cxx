@@ -1,0 +1,150 @@
+#include "vtkSphericalMapData.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace mobius
+{
+namespace vtk
+{
+std::string ExtractPoints(vtkPolyData* input, Points& points)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (n == 0)
+  {
+    return "the input has no points";
+  }
+  points.resize(n, 3);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      std::ostringstream error;
+      error << "point " << i << " has a NaN or infinite coordinate";
+      return error.str();
+    }
+    points.row(i) << p[0], p[1], p[2];
+  }
+  return {};
+}
+
+std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles)
+{
+  if (input->GetNumberOfLines() > 0 || input->GetNumberOfStrips() > 0)
+  {
+    std::ostringstream error;
+    error << "the input has " << input->GetNumberOfLines() << " line and "
+          << input->GetNumberOfStrips()
+          << " triangle-strip cells; only triangles are accepted (apply vtkTriangleFilter)";
+    return error.str();
+  }
+  vtkCellArray* polys = input->GetPolys();
+  triangles.resize(polys->GetNumberOfCells(), 3);
+  vtkIdType npts = 0;
+  const vtkIdType* ids = nullptr;
+  vtkIdType t = 0;
+  for (polys->InitTraversal(); polys->GetNextCell(npts, ids); ++t)
+  {
+    if (npts != 3)
+    {
+      std::ostringstream error;
+      error << "polygon " << t << " has " << npts
+            << " points; only triangles are accepted (apply vtkTriangleFilter)";
+      return error.str();
+    }
+    triangles.row(t) << ids[0], ids[1], ids[2];
+  }
+  return {};
+}
+
+std::string CheckOnUnitSphere(const Points& points)
+{
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    const double radius = points.row(i).norm();
+    if (std::abs(radius - 1.0) > UnitSphereTolerance)
+    {
+      std::ostringstream error;
+      error << "point " << i << " is not on the unit sphere (radius " << radius
+            << ", tolerance " << UnitSphereTolerance
+            << "): the input must be a spherical map, e.g. the output of vtkSphericalConformalMap";
+      return error.str();
+    }
+  }
+  return {};
+}
+
+std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas)
+{
+  vtkDataArray* array = input->GetCellData()->GetArray(SurfaceAreaArrayName);
+  if (!array)
+  {
+    return std::string("the input has no cell array '") + SurfaceAreaArrayName +
+      "' (the original surface area of each triangle; vtkSphericalConformalMap makes it)";
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    return std::string("cell array '") + SurfaceAreaArrayName + "' must have one component";
+  }
+  // Cell data is indexed over verts, lines, polys, strips in that order.
+  const vtkIdType offset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const vtkIdType count = input->GetNumberOfPolys();
+  areas.resize(count);
+  for (vtkIdType t = 0; t < count; ++t)
+  {
+    const double area = array->GetComponent(offset + t, 0);
+    if (!std::isfinite(area) || area <= 0)
+    {
+      std::ostringstream error;
+      error << "cell array '" << SurfaceAreaArrayName << "' has an invalid value " << area
+            << " at triangle " << t << "; areas must be finite and positive";
+      return error.str();
+    }
+    areas[t] = area;
+  }
+  return {};
+}
+
+void SetPoints(vtkPolyData* output, const Points& points)
+{
+  vtkNew<vtkPoints> vtkpoints;
+  vtkpoints->SetDataTypeToDouble();
+  vtkpoints->SetNumberOfPoints(points.rows());
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    vtkpoints->SetPoint(i, points(i, 0), points(i, 1), points(i, 2));
+  }
+  output->SetPoints(vtkpoints);
+}
+
+void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(count);
+  array->SetNumberOfTuples(1);
+  for (int k = 0; k < count; ++k)
+  {
+    array->SetComponent(0, k, values[k]);
+  }
+  fieldData->RemoveArray(name);
+  fieldData->AddArray(array);
+}
+
+void SetFieldValue(vtkFieldData* fieldData, const char* name, double value)
+{
+  SetFieldValues(fieldData, name, &value, 1);
+}
+}
+}

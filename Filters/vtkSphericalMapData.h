@@ -1,0 +1,55 @@
+/**
+ * @file vtkSphericalMapData.h
+ * @brief Conversions between vtkPolyData spherical maps and the VTK-free core, and the
+ * checks every filter applies to them (private to the module).
+ *
+ * A spherical map (see DESIGN.md, "Pipeline and data contract") is a vtkPolyData of
+ * triangles whose points lie on the unit sphere, with point data `SurfacePoints` (the
+ * vertex on the original surface) and cell data `SurfaceArea` (the triangle's original
+ * area). Each function returns an empty string on success, else a message naming the
+ * problem, ready for vtkErrorMacro.
+ */
+#ifndef vtkSphericalMapData_h
+#define vtkSphericalMapData_h
+
+#include "MeshTypes.h"
+
+#include <string>
+
+class vtkFieldData;
+class vtkPolyData;
+
+namespace mobius
+{
+namespace vtk
+{
+/// Array names of the data contract; part of the public API, keep them stable.
+constexpr const char* SurfacePointsArrayName = "SurfacePoints";
+constexpr const char* SurfaceAreaArrayName = "SurfaceArea";
+
+/// Distance from 1 that a spherical map's point radius may have.
+constexpr double UnitSphereTolerance = 1e-6;
+
+/// Copies the points; fails on an empty point set or NaN/Inf coordinates.
+std::string ExtractPoints(vtkPolyData* input, Points& points);
+
+/// Copies the polygons, all of which must be triangles; fails on lines, strips and polygons
+/// of other sizes.
+std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles);
+
+/// Fails unless every point is within UnitSphereTolerance of the unit sphere.
+std::string CheckOnUnitSphere(const Points& points);
+
+/// Reads cell data `SurfaceArea` for the triangles: present, one component, finite, > 0.
+std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas);
+
+/// Replaces the output's points by `points` (double precision).
+void SetPoints(vtkPolyData* output, const Points& points);
+
+/// Adds (or replaces) a named field-data array with one tuple of `count` components.
+void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count);
+void SetFieldValue(vtkFieldData* fieldData, const char* name, double value);
+}
+}
+
+#endif

@@ -1,0 +1,125 @@
+// Shared helpers of the C++ filter tests: generated spherical maps and an observer that
+// records vtkErrorMacro messages so tests can check what a filter says.
+#ifndef MobiusTestUtilities_h
+#define MobiusTestUtilities_h
+
+#include "Icosphere.h"
+#include "MobiusCentering.h"
+
+#include "vtkCallbackCommand.h"
+
+#include <Eigen/Geometry>
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkObject.h"
+#include "vtkPoints.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <string>
+
+namespace mobius_test
+{
+/// Records the last error and warning an object reports (instead of printing them).
+class MessageCatcher
+{
+public:
+  explicit MessageCatcher(vtkObject* observed)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long event, void* clientData, void* callData) {
+      auto self = static_cast<MessageCatcher*>(clientData);
+      const std::string message = callData ? static_cast<const char*>(callData) : "";
+      (event == vtkCommand::ErrorEvent ? self->Error : self->Warning) = message;
+    });
+    observed->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    observed->AddObserver(vtkCommand::WarningEvent, this->Callback);
+  }
+  std::string Error;
+  std::string Warning;
+
+private:
+  vtkNew<vtkCallbackCommand> Callback;
+};
+
+/// A spherical map of the surface embed(S^2): an icosphere with `SurfaceArea` the area of
+/// each triangle pushed through `embed`, `SurfacePoints` the embedded vertices, then moved
+/// off center by the inversion with center `inversion`.
+inline vtkSmartPointer<vtkPolyData> MakeSphericalMap(int levels,
+  const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& embed,
+  const Eigen::Vector3d& inversion = Eigen::Vector3d::Zero())
+{
+  mobius::Points sphere;
+  mobius::Triangles triangles;
+  mobius::MakeIcosphere(levels, sphere, triangles);
+  mobius::Points surface(sphere.rows(), 3);
+  for (Eigen::Index i = 0; i < sphere.rows(); ++i)
+  {
+    surface.row(i) = embed(sphere.row(i).transpose()).transpose();
+  }
+  mobius::ApplyInversion(inversion, sphere);
+
+  auto map = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> surfacePoints;
+  surfacePoints->SetName("SurfacePoints");
+  surfacePoints->SetNumberOfComponents(3);
+  for (Eigen::Index i = 0; i < sphere.rows(); ++i)
+  {
+    points->InsertNextPoint(sphere(i, 0), sphere(i, 1), sphere(i, 2));
+    surfacePoints->InsertNextTuple3(surface(i, 0), surface(i, 1), surface(i, 2));
+  }
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkDoubleArray> areas;
+  areas->SetName("SurfaceArea");
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const vtkIdType ids[3] = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+    polys->InsertNextCell(3, ids);
+    const Eigen::Vector3d a = surface.row(ids[0]), b = surface.row(ids[1]), c = surface.row(ids[2]);
+    areas->InsertNextValue(0.5 * (b - a).cross(c - a).norm());
+  }
+  map->SetPoints(points);
+  map->SetPolys(polys);
+  map->GetPointData()->AddArray(surfacePoints);
+  map->GetCellData()->AddArray(areas);
+  return map;
+}
+
+/// An asymmetric blob (stretched, with a bulge), so its centered map is far from the
+/// identity.
+inline Eigen::Vector3d BumpySurface(const Eigen::Vector3d& x)
+{
+  const double bulge =
+    1.0 + 0.8 * std::exp(-4.0 * (x - Eigen::Vector3d(0.6, 0.6, 0.5)).squaredNorm());
+  return Eigen::Vector3d(1.7 * x.x(), x.y(), 0.6 * x.z()) * bulge;
+}
+
+/// First component of field-data array `name`, NaN if absent.
+inline double FieldValue(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array ? array->GetComponent(0, 0) : std::nan("");
+}
+}
+
+#define MOBIUS_EXPECT(condition)                                                                   \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #condition << std::endl;      \
+      ++failures;                                                                                  \
+    }                                                                                              \
+  } while (false)
+
+#endif
