@@ -1,0 +1,272 @@
+#include "vtkSurfaceMeshReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkOBJReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkPLYReader.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkSTLReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkSurfaceMeshReader);
+
+namespace
+{
+std::string LowerCaseExtension(const std::string& fileName)
+{
+  const auto dot = fileName.find_last_of('.');
+  if (dot == std::string::npos)
+  {
+    return {};
+  }
+  std::string extension = fileName.substr(dot + 1);
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+// Next line that is neither empty nor a comment.
+bool NextDataLine(std::istream& in, std::string& line)
+{
+  while (std::getline(in, line))
+  {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.erase(hash);
+    }
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Parses an OFF file: "OFF" (or COFF/NOFF/CNOFF...) header, "V F E", V vertex lines and
+// F face lines "n i_1 ... i_n [color]". Returns an empty string or the reason it failed.
+std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
+{
+  std::ifstream in(fileName);
+  std::string line;
+  if (!NextDataLine(in, line))
+  {
+    return "the file is empty";
+  }
+  std::istringstream header(line);
+  std::string keyword;
+  header >> keyword;
+  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+  {
+    return "no OFF header";
+  }
+  long long numberOfVertices = -1, numberOfFaces = -1, numberOfEdges = 0;
+  // The counts may follow the keyword on the same line.
+  if (!(header >> numberOfVertices))
+  {
+    if (!NextDataLine(in, line))
+    {
+      return "missing vertex and face counts";
+    }
+    header.clear();
+    header.str(line);
+    header >> numberOfVertices;
+  }
+  header >> numberOfFaces >> numberOfEdges;
+  if (numberOfVertices <= 0 || numberOfFaces < 0)
+  {
+    return "invalid vertex or face count";
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numberOfVertices);
+  for (long long i = 0; i < numberOfVertices; ++i)
+  {
+    double p[3];
+    if (!NextDataLine(in, line) || !(std::istringstream(line) >> p[0] >> p[1] >> p[2]))
+    {
+      std::ostringstream error;
+      error << "vertex " << i << " of " << numberOfVertices << " is missing or malformed";
+      return error.str();
+    }
+    points->SetPoint(i, p);
+  }
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> ids;
+  for (long long f = 0; f < numberOfFaces; ++f)
+  {
+    long long n = 0;
+    std::istringstream face;
+    if (NextDataLine(in, line))
+    {
+      face.str(line);
+      face >> n;
+    }
+    ids.resize(static_cast<size_t>(std::max(0LL, n)));
+    bool ok = n >= 3;
+    for (auto& id : ids)
+    {
+      long long index = -1;
+      ok = ok && static_cast<bool>(face >> index) && index >= 0 && index < numberOfVertices;
+      id = static_cast<vtkIdType>(index);
+    }
+    if (!ok)
+    {
+      std::ostringstream error;
+      error << "face " << f << " of " << numberOfFaces
+            << " is missing, has fewer than 3 vertices or refers to a vertex out of range";
+      return error.str();
+    }
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  return {};
+}
+
+// Runs a VTK reader, turning its error events into our message.
+std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
+{
+  std::string error;
+  vtkNew<vtkCallbackCommand> catcher;
+  catcher->SetClientData(&error);
+  catcher->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto message = static_cast<std::string*>(clientData);
+    if (message->empty() && callData)
+    {
+      *message = static_cast<const char*>(callData);
+    }
+  });
+  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
+  reader->Update();
+  auto result = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (error.empty() && result)
+  {
+    output->ShallowCopy(result);
+  }
+  // VTK's messages carry file and line prefixes; keep the last line, the reason.
+  const auto lastBreak = error.find_last_of('\n', error.find_last_not_of("\n "));
+  return lastBreak == std::string::npos ? error : error.substr(lastBreak + 1);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSurfaceMeshReader::vtkSurfaceMeshReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+vtkSurfaceMeshReader::~vtkSurfaceMeshReader()
+{
+  this->SetFileName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSurfaceMeshReader::IsSupportedFile(const char* fileName)
+{
+  static const char* supported[] = { "obj", "off", "ply", "stl", "vtp", "vtk" };
+  const std::string extension = LowerCaseExtension(fileName ? fileName : "");
+  return std::find(std::begin(supported), std::end(supported), extension) != std::end(supported);
+}
+
+//------------------------------------------------------------------------------
+int vtkSurfaceMeshReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const std::string fileName = this->FileName ? this->FileName : "";
+  if (fileName.empty())
+  {
+    vtkErrorMacro(<< "No file name given.");
+    return 0;
+  }
+  if (!std::ifstream(fileName))
+  {
+    vtkErrorMacro(<< fileName << ": cannot open the file for reading.");
+    return 0;
+  }
+  const std::string extension = LowerCaseExtension(fileName);
+  vtkNew<vtkPolyData> mesh;
+  std::string error;
+  if (extension == "off")
+  {
+    error = ReadOFF(fileName, mesh);
+  }
+  else
+  {
+    vtkSmartPointer<vtkAlgorithm> reader;
+    if (extension == "obj")
+    {
+      auto obj = vtkSmartPointer<vtkOBJReader>::New();
+      obj->SetFileName(fileName.c_str());
+      reader = obj;
+    }
+    else if (extension == "ply")
+    {
+      auto ply = vtkSmartPointer<vtkPLYReader>::New();
+      ply->SetFileName(fileName.c_str());
+      reader = ply;
+    }
+    else if (extension == "stl")
+    {
+      auto stl = vtkSmartPointer<vtkSTLReader>::New();
+      stl->SetFileName(fileName.c_str());
+      reader = stl;
+    }
+    else if (extension == "vtp")
+    {
+      auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+      vtp->SetFileName(fileName.c_str());
+      reader = vtp;
+    }
+    else if (extension == "vtk")
+    {
+      auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+      legacy->SetFileName(fileName.c_str());
+      reader = legacy;
+    }
+    else
+    {
+      vtkErrorMacro(<< fileName << ": unknown mesh format '." << extension
+                    << "' (supported: .obj, .off, .ply, .stl, .vtp, .vtk).");
+      return 0;
+    }
+    error = ReadWithVTK(reader, mesh);
+  }
+  if (error.empty() && mesh->GetNumberOfPoints() == 0)
+  {
+    error = "the file holds no points";
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< fileName << ": " << error);
+    return 0;
+  }
+  output->ShallowCopy(mesh);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSurfaceMeshReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}

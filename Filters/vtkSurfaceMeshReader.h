@@ -1,0 +1,54 @@
+/**
+ * @class   vtkSurfaceMeshReader
+ * @brief   Reads a surface mesh from OBJ, OFF, PLY, STL, VTP or legacy VTK, by extension.
+ *
+ * One reader for the formats geometry-processing users keep their meshes in. OBJ, PLY,
+ * STL, VTP and legacy .vtk go through VTK's own readers; OFF (with optional COFF/NOFF
+ * header variants, comments and per-element colors, which are skipped) is parsed here
+ * since VTK has no OFF reader. Polygons are kept as they are (vtkSphericalConformalMap
+ * triangulates them). An unreadable, empty or malformed file is an error that names the
+ * file and the reason, and the output is left empty.
+ */
+#ifndef vtkSurfaceMeshReader_h
+#define vtkSurfaceMeshReader_h
+
+#include "vtkMobiusRegistrationFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string>
+
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSurfaceMeshReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSurfaceMeshReader* New();
+  vtkTypeMacro(vtkSurfaceMeshReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The file to read; its extension (case-insensitive) picks the format:
+   * .obj, .off, .ply, .stl, .vtp, .vtk.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  /**
+   * True if the extension of `fileName` is one this reader handles.
+   */
+  static bool IsSupportedFile(const char* fileName);
+
+protected:
+  vtkSurfaceMeshReader();
+  ~vtkSurfaceMeshReader() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkSurfaceMeshReader(const vtkSurfaceMeshReader&) = delete;
+  void operator=(const vtkSurfaceMeshReader&) = delete;
+};
+
+#endif
