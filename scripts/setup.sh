@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Sets up a Debian bookworm machine and builds the project (Release, ccache):
 #  1. installs the Debian packages in scripts/debian-packages.txt that are missing;
-#  2. unpacks the CC0 example meshes of Debian's libcgal-demo into build/data/meshes;
-#  3. configures and builds into build/ (or $MOBIUS_BUILD_DIR).
+#  2. configures (which unpacks the CC0 example meshes of Debian's libcgal-demo into
+#     build/data/meshes) and builds into build/ (or $MOBIUS_BUILD_DIR).
 # Quick when everything is already there. Usage: scripts/setup.sh
 set -euo pipefail
 
@@ -26,17 +26,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-# --- 2. Example meshes (CC0, from libcgal-demo) -----------------------------------
-meshes="$build/data/meshes"
-cgal_data=/usr/share/doc/libcgal-dev/data.tar.gz
-if [ ! -f "$meshes/bull.off" ]; then
-  mkdir -p "$meshes"
-  for name in hand cow bull camel bear man armadillo bunny00 eight elephant; do
-    tar -xzf "$cgal_data" -O "data/meshes/$name.off" > "$meshes/$name.off"
-  done
-fi
-
-# --- 3. Configure and build -------------------------------------------------------
+# --- 2. Configure and build -------------------------------------------------------
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" \
     -DCMAKE_BUILD_TYPE=Release \

@@ -1,0 +1,267 @@
+#include "ConformalMap.h"
+
+#include "CotangentLaplacian.h"
+#include "MeshTopology.h"
+#include "SphericalFlipRepair.h"
+#include "SqueezedRegionRefinement.h"
+
+#include <Eigen/Geometry>
+
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <sstream>
+
+namespace mobius
+{
+namespace
+{
+// Moves the area-weighted centroid (lumped mass = area/3 per corner gives exactly the
+// surface centroid) to the origin and scales the surface to unit area. Returns false if the
+// surface has no area or non-finite coordinates.
+bool NormalizeShape(Points& x, const Triangles& triangles, Vector& mass)
+{
+  mass = LumpedMass(x, triangles);
+  const double area = mass.sum();
+  if (!(area > 0.0) || !std::isfinite(area))
+  {
+    return false;
+  }
+  const Eigen::RowVector3d centroid = (mass.transpose() * x) / area;
+  x.rowwise() -= centroid;
+  x *= 1.0 / std::sqrt(area);
+  mass /= area;
+  return x.allFinite();
+}
+
+// L x computed edge by edge as sum_j w_ij (x_i - x_j): differences of nearby points are
+// exact in floating point, so tiny regions keep their relative precision (the plain product
+// L_ii x_i - sum_j w_ij x_j cancels large terms and loses it).
+Eigen::MatrixXd ApplyStiffnessToDifferences(const SparseMatrix& stiffness, const Points& x)
+{
+  Eigen::MatrixXd product = Eigen::MatrixXd::Zero(x.rows(), 3);
+  for (Index col = 0; col < stiffness.outerSize(); ++col)
+  {
+    for (SparseMatrix::InnerIterator it(stiffness, col); it; ++it)
+    {
+      if (it.row() != col)
+      {
+        // Column col of L holds -w_{row,col}: the contribution of x_row to row col.
+        product.row(col) -= it.value() * (x.row(col) - x.row(it.row()));
+      }
+    }
+  }
+  return product;
+}
+
+// Index of each diagonal entry in the value array of a compressed column-major matrix.
+std::vector<Index> DiagonalPositions(const SparseMatrix& matrix)
+{
+  std::vector<Index> positions(static_cast<size_t>(matrix.cols()), -1);
+  for (Index col = 0; col < matrix.outerSize(); ++col)
+  {
+    for (Index k = matrix.outerIndexPtr()[col]; k < matrix.outerIndexPtr()[col + 1]; ++k)
+    {
+      if (matrix.innerIndexPtr()[k] == col)
+      {
+        positions[col] = k;
+      }
+    }
+  }
+  return positions;
+}
+
+ConformalMapResult Fail(ConformalMapResult& result, const std::string& message)
+{
+  result.Success = false;
+  result.Message = message;
+  result.SpherePoints.resize(0, 3);
+  return result;
+}
+
+ConformalMapResult MapToSphere(
+  const Points& points, const Triangles& triangles, const ConformalMapParameters& p)
+{
+  ConformalMapResult result;
+  if (!(p.TimeStep > 0.0) || !std::isfinite(p.TimeStep))
+  {
+    return Fail(result, "TimeStep must be a positive number");
+  }
+  if (p.MaximumNumberOfIterations < 1)
+  {
+    return Fail(result, "MaximumNumberOfIterations must be at least 1");
+  }
+  if (!(p.ConvergenceTolerance >= 0.0))
+  {
+    return Fail(result, "ConvergenceTolerance must not be negative");
+  }
+
+  MeshTopologyReport topology = AnalyzeMeshTopology(points, triangles);
+  if (p.IntrinsicDelaunay)
+  {
+    // Collinear triangles are fine on the intrinsic Delaunay triangulation (their long edge
+    // gets flipped away); a zero-length edge is caught when the weights are built.
+    topology.ZeroAreaTriangles = 0;
+  }
+  if (!topology.IsTopologicalSphere())
+  {
+    return Fail(result,
+      "the input is not a closed, connected, consistently oriented genus-0 surface: " +
+        DescribeTopologyProblems(topology));
+  }
+
+  Points x = points;
+  Vector mass;
+  if (!NormalizeShape(x, triangles, mass))
+  {
+    return Fail(result, "the input surface has no area");
+  }
+
+  SparseMatrix stiffness;
+  CotangentStiffnessInfo stiffnessInfo;
+  if (!BuildCotangentStiffness(x, triangles, p.IntrinsicDelaunay, stiffness, stiffnessInfo))
+  {
+    return Fail(result, "cannot build the Laplacian: " + stiffnessInfo.Error);
+  }
+  result.IntrinsicFlips = stiffnessInfo.IntrinsicFlips;
+
+  // The system matrix M_t + delta L has L's pattern (all diagonal entries are stored), so the
+  // fill-reducing ordering and the symbolic factorization are computed once.
+  SparseMatrix system = p.TimeStep * stiffness;
+  const std::vector<Index> diagonal = DiagonalPositions(system);
+  const Vector scaledStiffness =
+    Eigen::Map<const Vector>(system.valuePtr(), system.nonZeros()); // delta L's values
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> solver;
+  solver.analyzePattern(system);
+  if (solver.info() != Eigen::Success)
+  {
+    return Fail(result, "the sparse Cholesky analysis failed");
+  }
+
+  Points next(x.rows(), 3);
+  Vector nextMass;
+  for (int iteration = 0; iteration < p.MaximumNumberOfIterations; ++iteration)
+  {
+    Eigen::Map<Vector>(system.valuePtr(), system.nonZeros()) = scaledStiffness;
+    for (Index i = 0; i < x.rows(); ++i)
+    {
+      system.valuePtr()[diagonal[i]] += mass[i];
+    }
+    solver.factorize(system);
+    if (solver.info() != Eigen::Success)
+    {
+      std::ostringstream s;
+      s << "the sparse Cholesky factorization failed at flow step " << iteration + 1;
+      return Fail(result, s.str());
+    }
+    // Solve for the displacement, (M_t + delta L) d = -delta L x_t, rather than for x_{t+1}
+    // itself: the same step, but the solver's rounding error is then relative to the
+    // (small, near convergence) displacement instead of the sphere's radius. Limbs that a
+    // conformal map shrinks by 1e-12 would otherwise be folded by rounding noise.
+    // One solve for the three coordinates (a 3-column right-hand side).
+    const Eigen::MatrixXd rhs = -p.TimeStep * ApplyStiffnessToDifferences(stiffness, x);
+    next = x + solver.solve(rhs);
+    if (!NormalizeShape(next, triangles, nextMass))
+    {
+      std::ostringstream s;
+      s << "the flow produced non-finite or degenerate positions at step " << iteration + 1;
+      return Fail(result, s.str());
+    }
+    if (p.BetweenSteps)
+    {
+      if (!p.BetweenSteps(next, iteration + 1))
+      {
+        return Fail(result, "the step between flow iterations (centering) failed");
+      }
+      if (!NormalizeShape(next, triangles, nextMass))
+      {
+        return Fail(result, "the step between flow iterations produced degenerate positions");
+      }
+    }
+    // Measured after the step between iterations, so that a drift the centering undoes
+    // does not count as change.
+    const double displacement = std::sqrt((nextMass.transpose() *
+      (next - x).rowwise().squaredNorm()).value());
+    const double radius = std::sqrt((nextMass.transpose() * next.rowwise().squaredNorm()).value());
+    result.RelativeChange = displacement / radius;
+    x.swap(next);
+    mass.swap(nextMass);
+    result.Iterations = iteration + 1;
+
+    if (p.Progress && !p.Progress(static_cast<double>(result.Iterations) /
+                          static_cast<double>(p.MaximumNumberOfIterations)))
+    {
+      return Fail(result, "aborted");
+    }
+    if (result.RelativeChange <= p.ConvergenceTolerance)
+    {
+      result.Converged = true;
+      break;
+    }
+  }
+
+  // x is centered at its area-weighted centroid: project radially.
+  for (Index i = 0; i < x.rows(); ++i)
+  {
+    const double r = x.row(i).norm();
+    if (!(r > 0.0) || !std::isfinite(r))
+    {
+      return Fail(result, "a vertex reached the center of the sphere; cannot project it");
+    }
+    x.row(i) /= r;
+  }
+  // Face outward: if the triangles enclose negative volume, mirror the map.
+  double volume = 0.0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::Vector3d a = x.row(triangles(t, 0)), b = x.row(triangles(t, 1)),
+                          c = x.row(triangles(t, 2));
+    volume += a.dot(b.cross(c));
+  }
+  if (volume < 0.0)
+  {
+    x.col(0) *= -1.0;
+    result.Reflected = true;
+  }
+  if (p.RefineSqueezedRegions)
+  {
+    result.Refinement = RefineSqueezedRegions(x, triangles, points, getenv("TAU") ? atof(getenv("TAU")) : 1e-3);
+  }
+  if (p.FlipRepairPasses > 0)
+  {
+    result.FlipRepair = RepairFlippedTriangles(x, triangles, p.FlipRepairPasses);
+  }
+  result.Distortion = MeasureMapDistortion(points, x, triangles);
+  result.SpherePoints.swap(x);
+  result.Success = true;
+  std::ostringstream s;
+  s << (result.Converged ? "converged" : "stopped at the iteration limit") << " after "
+    << result.Iterations << " steps (relative change " << result.RelativeChange << "); "
+    << result.Distortion.FlippedTriangles << " flipped triangles, mean quasi-conformal distortion "
+    << result.Distortion.MeanQuasiConformal;
+  result.Message = s.str();
+  return result;
+}
+}
+
+ConformalMapResult ComputeSphericalConformalMap(
+  const Points& points, const Triangles& triangles, const ConformalMapParameters& parameters)
+{
+  try
+  {
+    return MapToSphere(points, triangles, parameters);
+  }
+  catch (const std::bad_alloc&)
+  {
+    ConformalMapResult result;
+    return Fail(result, "out of memory");
+  }
+  catch (const std::exception& e)
+  {
+    ConformalMapResult result;
+    return Fail(result, std::string("unexpected error: ") + e.what());
+  }
+}
+}

@@ -1,0 +1,87 @@
+// Spherical conformal map of a closed genus-0 surface by conformalized mean curvature flow
+// (Kazhdan, Solomon & Ben-Chen, "Can Mean-Curvature Flow be Modified to be Non-singular?",
+// SGP 2012).
+//
+// The flow: with the stiffness L built once from the input (cot/2 weights, optionally on the
+// intrinsic Delaunay triangulation) and the lumped mass M_t of the current shape x_t, one
+// backward-Euler step solves (M_t + delta L) x_{t+1} = M_t x_t, then recenters x_{t+1} at
+// its area-weighted centroid and rescales it to unit area. Because L stays that of the input,
+// the flow does not pinch off like mean curvature flow; it converges to a round sphere, and
+// the vertices' positions on it are a conformal map. At the end the points are projected
+// radially onto the unit sphere.
+#ifndef mobius_ConformalMap_h
+#define mobius_ConformalMap_h
+
+#include "MapDistortion.h"
+#include "MeshTypes.h"
+#include "SqueezedRegionRefinement.h"
+#include "SphericalFlipRepair.h"
+
+#include <functional>
+#include <string>
+
+namespace mobius
+{
+/// Optional step between flow iterations, given the current shape (centered, unit area) and
+/// the number of iterations done. It may replace the positions (e.g. by a Möbius-centered
+/// projection onto the sphere, paper §7.1; the flow re-normalizes them afterwards). Return
+/// false to fail the map (set the reason in the hook's own state).
+using FlowStepHook = std::function<bool(Points& positions, int iteration)>;
+
+struct ConformalMapParameters
+{
+  /// delta of the backward-Euler step, for a surface scaled to unit area and the standard
+  /// cot/2 stiffness. (The authors' program uses 0.1 with 4x that stiffness: 0.4 here.)
+  double TimeStep = 0.4;
+  /// Upper bound on flow steps.
+  int MaximumNumberOfIterations = 100;
+  /// Stop when the area-weighted RMS displacement of a step, relative to the RMS distance
+  /// of the shape from its centroid, falls below this.
+  double ConvergenceTolerance = 1e-4;
+  /// Build the stiffness on the intrinsic Delaunay triangulation (robust to needle
+  /// triangles; identical on meshes that are already Delaunay).
+  bool IntrinsicDelaunay = true;
+  /// Re-solve regions the map squeezes below 1e-3 in local coordinates (see
+  /// SqueezedRegionRefinement.h).
+  bool RefineSqueezedRegions = true;
+  /// Sweeps of local flip repair after the flow (see SphericalFlipRepair.h); 0: none.
+  int FlipRepairPasses = 100;
+  /// Optional centering between steps (see FlowStepHook); empty: none.
+  FlowStepHook BetweenSteps;
+  /// Progress in [0, 1]; returning false aborts.
+  ProgressCallback Progress;
+};
+
+struct ConformalMapResult
+{
+  /// False on invalid input, solver failure, non-finite values or abort; Message says why.
+  bool Success = false;
+  std::string Message;
+  /// The map: one point on the unit sphere per input point.
+  Points SpherePoints;
+  /// Flow steps taken and the relative change of the last one.
+  int Iterations = 0;
+  double RelativeChange = 0.0;
+  /// The relative change fell below the tolerance (otherwise the iteration limit ended it).
+  bool Converged = false;
+  /// Edge flips made for the intrinsic Delaunay stiffness.
+  Index IntrinsicFlips = 0;
+  /// The map was mirrored (x -> -x) so that the triangles face outward on the sphere: the
+  /// input's triangles faced inward.
+  bool Reflected = false;
+  /// What the squeezed-region refinement did.
+  SqueezedRegionRefinementResult Refinement;
+  /// What the flip repair did (flips before it, flips left, vertices moved).
+  FlipRepairResult FlipRepair;
+  /// Quality of the final map (flipped triangles, quasi-conformal and area distortion).
+  MapDistortion Distortion;
+};
+
+/// Maps a closed, connected, consistently oriented genus-0 triangle mesh to the unit sphere.
+/// Never throws; on failure returns Success = false with a message naming the problem (the
+/// topology problems come from DescribeTopologyProblems) and no points.
+ConformalMapResult ComputeSphericalConformalMap(const Points& points, const Triangles& triangles,
+  const ConformalMapParameters& parameters = ConformalMapParameters());
+}
+
+#endif

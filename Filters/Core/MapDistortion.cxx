@@ -1,0 +1,102 @@
+#include "MapDistortion.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mobius
+{
+namespace
+{
+// The triangle's edge vectors p1 - p0, p2 - p0 as the columns of a 2x2 matrix, in an
+// orthonormal frame of the triangle's own plane with x along p1 - p0 (so the matrix is upper
+// triangular with a non-negative determinant).
+Eigen::Matrix2d PlanarEdges(
+  const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2)
+{
+  const Eigen::Vector3d e1 = p1 - p0, e2 = p2 - p0;
+  const double length = e1.norm();
+  Eigen::Matrix2d edges;
+  edges(0, 0) = length;
+  edges(1, 0) = 0.0;
+  edges(0, 1) = length > 0.0 ? e1.dot(e2) / length : 0.0;
+  edges(1, 1) = length > 0.0 ? e1.cross(e2).norm() / length : 0.0;
+  return edges;
+}
+}
+
+double TriangleQuasiConformalDistortion(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+  const Eigen::Vector3d& p2, const Eigen::Vector3d& q0, const Eigen::Vector3d& q1,
+  const Eigen::Vector3d& q2)
+{
+  const Eigen::Matrix2d from = PlanarEdges(p0, p1, p2), to = PlanarEdges(q0, q1, q2);
+  if (!(from(0, 0) > 0.0 && from(1, 1) > 0.0))
+  {
+    return std::numeric_limits<double>::quiet_NaN(); // callers skip degenerate originals
+  }
+  // The map A with A * from = to; from is upper triangular, so invert it directly.
+  Eigen::Matrix2d inverse;
+  inverse << 1.0 / from(0, 0), -from(0, 1) / (from(0, 0) * from(1, 1)), 0.0, 1.0 / from(1, 1);
+  const Eigen::Matrix2d a = to * inverse;
+  // Closed-form singular values of a 2x2 matrix: (E +- F) with these two norms.
+  const double e = 0.5 * std::hypot(a(0, 0) + a(1, 1), a(1, 0) - a(0, 1));
+  const double f = 0.5 * std::hypot(a(0, 0) - a(1, 1), a(1, 0) + a(0, 1));
+  const double largest = e + f, smallest = std::abs(e - f);
+  if (!(smallest > 0.0))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return largest / smallest;
+}
+
+MapDistortion MeasureMapDistortion(
+  const Points& original, const Points& mapped, const Triangles& triangles)
+{
+  MapDistortion d;
+  const Index m = triangles.rows();
+  Vector originalArea(m), mappedArea(m);
+  for (Index t = 0; t < m; ++t)
+  {
+    const Eigen::Vector3d p0 = original.row(triangles(t, 0)), p1 = original.row(triangles(t, 1)),
+                          p2 = original.row(triangles(t, 2));
+    const Eigen::Vector3d q0 = mapped.row(triangles(t, 0)), q1 = mapped.row(triangles(t, 1)),
+                          q2 = mapped.row(triangles(t, 2));
+    originalArea[t] = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+    mappedArea[t] = 0.5 * (q1 - q0).cross(q2 - q0).norm();
+    d.FlippedTriangles += q0.dot(q1.cross(q2)) <= 0.0 ? 1 : 0;
+  }
+  const double originalTotal = originalArea.sum(), mappedTotal = mappedArea.sum();
+  double weightedSum = 0.0, weight = 0.0;
+  d.MaxQuasiConformal = 1.0;
+  d.MinAreaRatio = std::numeric_limits<double>::infinity();
+  d.MaxAreaRatio = 0.0;
+  for (Index t = 0; t < m; ++t)
+  {
+    if (!(originalArea[t] > 0.0))
+    {
+      continue;
+    }
+    const double qc = TriangleQuasiConformalDistortion(original.row(triangles(t, 0)),
+      original.row(triangles(t, 1)), original.row(triangles(t, 2)), mapped.row(triangles(t, 0)),
+      mapped.row(triangles(t, 1)), mapped.row(triangles(t, 2)));
+    if (std::isnan(qc))
+    {
+      continue;
+    }
+    weightedSum += originalArea[t] * qc;
+    weight += originalArea[t];
+    d.MaxQuasiConformal = std::max(d.MaxQuasiConformal, qc);
+    const double ratio = (mappedArea[t] / mappedTotal) / (originalArea[t] / originalTotal);
+    d.MinAreaRatio = std::min(d.MinAreaRatio, ratio);
+    d.MaxAreaRatio = std::max(d.MaxAreaRatio, ratio);
+  }
+  d.MeanQuasiConformal = weight > 0.0 ? weightedSum / weight : 1.0;
+  if (d.MaxAreaRatio == 0.0 && d.MinAreaRatio == std::numeric_limits<double>::infinity())
+  {
+    d.MinAreaRatio = d.MaxAreaRatio = 1.0; // nothing measured
+  }
+  return d;
+}
+}

@@ -1,0 +1,37 @@
+// How far a piecewise-linear map between two triangulations with the same connectivity is
+// from conformal and from area-preserving, and whether a spherical map folds.
+#ifndef mobius_MapDistortion_h
+#define mobius_MapDistortion_h
+
+#include "MeshTypes.h"
+
+namespace mobius
+{
+struct MapDistortion
+{
+  /// Triangles of the spherical map whose signed volume det(a, b, c) (the tetrahedron with
+  /// the sphere's center) is <= 0: folded over, or facing inward.
+  Index FlippedTriangles = 0;
+  /// Quasi-conformal distortion of a triangle: sigma_max / sigma_min of the linear map from
+  /// the original triangle to the mapped (flat) triangle; 1 for a similarity. The mean is
+  /// weighted by original area. A mapped triangle with no area counts as +infinity.
+  double MeanQuasiConformal = 1.0;
+  double MaxQuasiConformal = 1.0;
+  /// Mapped area / original area per triangle, after scaling both totals to 1.
+  double MinAreaRatio = 1.0;
+  double MaxAreaRatio = 1.0;
+};
+
+/// Distortion of the map original[i] -> mapped[i] over the triangles. Original triangles
+/// with no area are skipped (they have no defined distortion). `mapped` is taken to be
+/// centered at the origin for the flip count (true of a spherical map).
+MapDistortion MeasureMapDistortion(
+  const Points& original, const Points& mapped, const Triangles& triangles);
+
+/// Quasi-conformal distortion of one triangle map (sigma_max / sigma_min, >= 1).
+double TriangleQuasiConformalDistortion(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+  const Eigen::Vector3d& p2, const Eigen::Vector3d& q0, const Eigen::Vector3d& q1,
+  const Eigen::Vector3d& q2);
+}
+
+#endif

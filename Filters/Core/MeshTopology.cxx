@@ -1,0 +1,729 @@
+#include "MeshTopology.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+namespace mobius
+{
+namespace
+{
+// Disjoint sets with path halving; used for components and for vertex fans.
+class UnionFind
+{
+public:
+  explicit UnionFind(Index size)
+    : Parent(static_cast<size_t>(size))
+  {
+    std::iota(this->Parent.begin(), this->Parent.end(), Index(0));
+  }
+  Index Find(Index i)
+  {
+    while (this->Parent[i] != i)
+    {
+      this->Parent[i] = this->Parent[this->Parent[i]];
+      i = this->Parent[i];
+    }
+    return i;
+  }
+  void Union(Index a, Index b) { this->Parent[this->Find(a)] = this->Find(b); }
+
+private:
+  std::vector<Index> Parent;
+};
+
+// A triangle takes part in edge topology only if its indices are in range and distinct.
+std::vector<char> ValidTriangles(const Triangles& triangles, Index numberOfPoints)
+{
+  std::vector<char> valid(static_cast<size_t>(triangles.rows()), 0);
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Index a = triangles(t, 0), b = triangles(t, 1), c = triangles(t, 2);
+    const bool inRange = a >= 0 && b >= 0 && c >= 0 && a < numberOfPoints &&
+      b < numberOfPoints && c < numberOfPoints;
+    valid[t] = inRange && a != b && b != c && c != a;
+  }
+  return valid;
+}
+
+// One directed side of an edge: triangle t goes from From to To (its corners k and k+1).
+struct HalfEdge
+{
+  Index Low, High; // the edge's endpoints, sorted: the key that groups the sides of an edge
+  Index From;
+  Index Triangle;
+};
+
+// All half-edges of the valid triangles, sorted so that the sides of an edge are adjacent.
+std::vector<HalfEdge> SortedHalfEdges(const Triangles& triangles, const std::vector<char>& valid)
+{
+  std::vector<HalfEdge> halfEdges;
+  halfEdges.reserve(3 * valid.size());
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (!valid[t])
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
+      halfEdges.push_back({ std::min(from, to), std::max(from, to), from, t });
+    }
+  }
+  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return x.Low != y.Low ? x.Low < y.Low : x.High < y.High;
+  });
+  return halfEdges;
+}
+
+// Calls visit(begin, end) for each group of half-edges sharing an edge.
+template <typename Visitor>
+void ForEachEdge(const std::vector<HalfEdge>& halfEdges, Visitor visit)
+{
+  size_t begin = 0;
+  while (begin < halfEdges.size())
+  {
+    size_t end = begin + 1;
+    while (end < halfEdges.size() && halfEdges[end].Low == halfEdges[begin].Low &&
+      halfEdges[end].High == halfEdges[begin].High)
+    {
+      ++end;
+    }
+    visit(begin, end);
+    begin = end;
+  }
+}
+
+// Boundary loops as vertex sequences, following each boundary edge in its triangle's
+// direction. `closed` tells whether the chain came back to its start (it does not when the
+// orientation is inconsistent or a vertex has more outgoing than incoming boundary edges).
+void TraceBoundaryLoops(const std::vector<HalfEdge>& halfEdges, const Triangles& triangles,
+  std::vector<std::vector<Index>>& loops, std::vector<char>& closed)
+{
+  // Directed boundary edges from -> to, looked up by their start.
+  std::unordered_map<Index, std::vector<Index>> outgoing;
+  Index count = 0;
+  ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
+    if (end - begin == 1)
+    {
+      const HalfEdge& h = halfEdges[begin];
+      outgoing[h.From].push_back(h.From == h.Low ? h.High : h.Low);
+      ++count;
+    }
+  });
+  (void)triangles;
+  // Start chains at vertices with more outgoing than incoming edges first, so that open
+  // chains are traced from their beginning; then the rest, which are cycles.
+  std::unordered_map<Index, Index> balance;
+  for (const auto& entry : outgoing)
+  {
+    balance[entry.first] += static_cast<Index>(entry.second.size());
+    for (Index to : entry.second)
+    {
+      balance[to] -= 1;
+    }
+  }
+  std::vector<Index> starts;
+  for (const auto& entry : outgoing)
+  {
+    starts.push_back(entry.first);
+  }
+  std::sort(starts.begin(), starts.end(), [&](Index a, Index b) {
+    const bool openA = balance[a] > 0, openB = balance[b] > 0;
+    return openA != openB ? openA : a < b;
+  });
+  for (Index start : starts)
+  {
+    while (!outgoing[start].empty())
+    {
+      std::vector<Index> loop{ start };
+      Index current = start;
+      while (true)
+      {
+        auto& next = outgoing[current];
+        if (next.empty())
+        {
+          break;
+        }
+        current = next.back();
+        next.pop_back();
+        if (current == start)
+        {
+          break;
+        }
+        loop.push_back(current);
+      }
+      loops.push_back(std::move(loop));
+      closed.push_back(current == start);
+    }
+  }
+}
+
+double TriangleDoubleArea(const Points& points, Index a, Index b, Index c)
+{
+  const Eigen::Vector3d pa = points.row(a), pb = points.row(b), pc = points.row(c);
+  return (pb - pa).cross(pc - pa).norm();
+}
+
+// Drops the points no triangle uses and renumbers; fills provenance.PointSource.
+void CompactPoints(Points& points, Triangles& triangles, MeshProvenance& provenance)
+{
+  std::vector<Index> newIndex(static_cast<size_t>(points.rows()), -1);
+  std::vector<Index> source;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      Index& v = triangles(t, k);
+      if (newIndex[v] < 0)
+      {
+        newIndex[v] = static_cast<Index>(source.size());
+        source.push_back(v);
+      }
+      v = newIndex[v];
+    }
+  }
+  Points compacted(static_cast<Index>(source.size()), 3);
+  for (size_t i = 0; i < source.size(); ++i)
+  {
+    compacted.row(static_cast<Index>(i)) = points.row(source[i]);
+  }
+  points.swap(compacted);
+  std::vector<Index> composed(source.size());
+  for (size_t i = 0; i < source.size(); ++i)
+  {
+    composed[i] = provenance.PointSource.empty() ? source[i] : provenance.PointSource[source[i]];
+  }
+  provenance.PointSource.swap(composed);
+}
+
+Triangles SelectRows(const Triangles& triangles, const std::vector<Index>& rows)
+{
+  Triangles selected(static_cast<Index>(rows.size()), 3);
+  for (size_t i = 0; i < rows.size(); ++i)
+  {
+    selected.row(static_cast<Index>(i)) = triangles.row(rows[i]);
+  }
+  return selected;
+}
+}
+
+bool MeshTopologyReport::IsClosedManifold() const
+{
+  return this->BoundaryEdges == 0 && this->NonManifoldEdges == 0 &&
+    this->NonManifoldVertices == 0;
+}
+
+bool MeshTopologyReport::IsTopologicalSphere() const
+{
+  return this->NumberOfTriangles > 0 && this->NonFinitePoints == 0 &&
+    this->InvalidTriangles == 0 && this->RepeatedVertexTriangles == 0 &&
+    this->ZeroAreaTriangles == 0 && this->UnusedPoints == 0 && this->IsClosedManifold() &&
+    this->InconsistentlyOrientedEdges == 0 && this->ConnectedComponents == 1 &&
+    this->Genus == 0;
+}
+
+MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& triangles)
+{
+  MeshTopologyReport report;
+  const Index n = points.rows();
+  report.NumberOfPoints = n;
+  report.NumberOfTriangles = triangles.rows();
+
+  for (Index i = 0; i < n; ++i)
+  {
+    report.NonFinitePoints += points.row(i).allFinite() ? 0 : 1;
+  }
+
+  // Exact duplicates: sort the point indices by coordinates, compare neighbours.
+  std::vector<Index> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), Index(0));
+  auto lexicographic = [&](Index a, Index b) {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (points(a, k) != points(b, k))
+      {
+        return points(a, k) < points(b, k);
+      }
+    }
+    return false;
+  };
+  std::sort(order.begin(), order.end(), lexicographic);
+  for (size_t i = 1; i < order.size(); ++i)
+  {
+    report.DuplicatePoints += points.row(order[i]) == points.row(order[i - 1]) ? 1 : 0;
+  }
+
+  const std::vector<char> valid = ValidTriangles(triangles, n);
+  std::vector<char> used(static_cast<size_t>(n), 0);
+  Index validCount = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Index a = triangles(t, 0), b = triangles(t, 1), c = triangles(t, 2);
+    const bool inRange = a >= 0 && b >= 0 && c >= 0 && a < n && b < n && c < n;
+    if (!inRange)
+    {
+      ++report.InvalidTriangles;
+      continue;
+    }
+    if (!valid[t])
+    {
+      ++report.RepeatedVertexTriangles;
+      continue;
+    }
+    ++validCount;
+    used[a] = used[b] = used[c] = 1;
+    // Numerically zero: twice the area is at rounding level next to the longest edge squared
+    // (a needle of 0.01 degrees is still 1e-4 here; only collinear points get this low).
+    const double longest = std::max({ (points.row(a) - points.row(b)).squaredNorm(),
+      (points.row(b) - points.row(c)).squaredNorm(),
+      (points.row(c) - points.row(a)).squaredNorm() });
+    const double doubleArea = TriangleDoubleArea(points, a, b, c);
+    if (std::isfinite(doubleArea) && doubleArea <= 1e-14 * longest)
+    {
+      ++report.ZeroAreaTriangles;
+    }
+  }
+  const Index usedCount = std::count(used.begin(), used.end(), 1);
+  report.UnusedPoints = n - usedCount;
+
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
+    ++report.Edges;
+    const size_t sides = end - begin;
+    if (sides == 1)
+    {
+      ++report.BoundaryEdges;
+    }
+    else if (sides > 2)
+    {
+      ++report.NonManifoldEdges;
+    }
+    else if (halfEdges[begin].From == halfEdges[begin + 1].From)
+    {
+      ++report.InconsistentlyOrientedEdges;
+    }
+  });
+
+  std::vector<std::vector<Index>> loops;
+  std::vector<char> closed;
+  TraceBoundaryLoops(halfEdges, triangles, loops, closed);
+  report.BoundaryLoops = static_cast<Index>(loops.size());
+
+  // Components of the vertices joined by valid triangles.
+  UnionFind components(n);
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (valid[t])
+    {
+      components.Union(triangles(t, 0), triangles(t, 1));
+      components.Union(triangles(t, 0), triangles(t, 2));
+    }
+  }
+  for (Index i = 0; i < n; ++i)
+  {
+    report.ConnectedComponents += (used[i] && components.Find(i) == i) ? 1 : 0;
+  }
+
+  // Vertex fans: the triangles around v, joined when they share an edge (v, w). A manifold
+  // vertex has one fan; two cones touching at their tips have two.
+  std::vector<Index> firstTriangle(static_cast<size_t>(n) + 1, 0);
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (valid[t])
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        ++firstTriangle[triangles(t, k) + 1];
+      }
+    }
+  }
+  std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
+  std::vector<Index> incident(static_cast<size_t>(firstTriangle[n]));
+  {
+    std::vector<Index> fill(firstTriangle.begin(), firstTriangle.end() - 1);
+    for (Index t = 0; t < triangles.rows(); ++t)
+    {
+      if (valid[t])
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          incident[fill[triangles(t, k)]++] = t;
+        }
+      }
+    }
+  }
+  std::vector<std::pair<Index, Index>> neighbours; // (other vertex, local triangle number)
+  std::vector<Index> fanParent;
+  for (Index v = 0; v < n; ++v)
+  {
+    const Index begin = firstTriangle[v], count = firstTriangle[v + 1] - begin;
+    if (count == 0)
+    {
+      continue;
+    }
+    neighbours.clear();
+    for (Index j = 0; j < count; ++j)
+    {
+      const Index t = incident[begin + j];
+      for (int k = 0; k < 3; ++k)
+      {
+        if (triangles(t, k) != v)
+        {
+          neighbours.emplace_back(triangles(t, k), j);
+        }
+      }
+    }
+    std::sort(neighbours.begin(), neighbours.end());
+    fanParent.resize(static_cast<size_t>(count));
+    std::iota(fanParent.begin(), fanParent.end(), Index(0));
+    auto find = [&](Index i) {
+      while (fanParent[i] != i)
+      {
+        i = fanParent[i] = fanParent[fanParent[i]];
+      }
+      return i;
+    };
+    for (size_t i = 1; i < neighbours.size(); ++i)
+    {
+      if (neighbours[i].first == neighbours[i - 1].first)
+      {
+        fanParent[find(neighbours[i].second)] = find(neighbours[i - 1].second);
+      }
+    }
+    Index fans = 0;
+    for (Index j = 0; j < count; ++j)
+    {
+      fans += find(j) == j ? 1 : 0;
+    }
+    report.NonManifoldVertices += fans > 1 ? 1 : 0;
+  }
+
+  report.EulerCharacteristic = usedCount - report.Edges + validCount;
+  if (validCount > 0 && report.IsClosedManifold() && report.InconsistentlyOrientedEdges == 0 &&
+    report.ConnectedComponents == 1)
+  {
+    report.Genus = static_cast<int>((2 - report.EulerCharacteristic) / 2);
+  }
+  return report;
+}
+
+std::string DescribeTopologyProblems(const MeshTopologyReport& r)
+{
+  std::vector<std::string> problems;
+  auto add = [&](Index count, const char* singular, const char* plural) {
+    if (count > 0)
+    {
+      std::ostringstream s;
+      s << count << " " << (count == 1 ? singular : plural);
+      problems.push_back(s.str());
+    }
+  };
+  if (r.NumberOfTriangles == 0)
+  {
+    problems.push_back("no triangles");
+  }
+  add(r.NonFinitePoints, "point with a NaN or infinite coordinate",
+    "points with NaN or infinite coordinates");
+  add(r.InvalidTriangles, "triangle with a point index out of range",
+    "triangles with point indices out of range");
+  add(r.RepeatedVertexTriangles, "triangle naming the same point twice",
+    "triangles naming the same point twice");
+  add(r.ZeroAreaTriangles, "zero-area triangle", "zero-area triangles");
+  add(r.UnusedPoints, "point not used by any triangle", "points not used by any triangle");
+  if (r.BoundaryEdges > 0)
+  {
+    std::ostringstream s;
+    s << r.BoundaryLoops << " boundary loop" << (r.BoundaryLoops == 1 ? "" : "s")
+      << " (holes) made of " << r.BoundaryEdges << " boundary edges";
+    if (r.DuplicatePoints > 0)
+    {
+      s << " (" << r.DuplicatePoints << " points are exact duplicates: a triangle soup?)";
+    }
+    problems.push_back(s.str());
+  }
+  add(r.NonManifoldEdges, "non-manifold edge (more than two triangles)",
+    "non-manifold edges (more than two triangles)");
+  add(r.NonManifoldVertices, "non-manifold vertex (triangles around it form several fans)",
+    "non-manifold vertices (triangles around them form several fans)");
+  add(r.InconsistentlyOrientedEdges, "edge where the two triangles' orientations disagree",
+    "edges where the two triangles' orientations disagree");
+  if (r.ConnectedComponents > 1)
+  {
+    add(r.ConnectedComponents, "connected component", "connected components");
+  }
+  if (r.Genus > 0)
+  {
+    std::ostringstream s;
+    s << "genus " << r.Genus << " (" << r.Genus << (r.Genus == 1 ? " handle" : " handles")
+      << "; only genus 0 maps to the sphere)";
+    problems.push_back(s.str());
+  }
+  std::string joined;
+  for (const auto& p : problems)
+  {
+    joined += (joined.empty() ? "" : "; ") + p;
+  }
+  return joined;
+}
+
+MeshProvenance MergeDuplicatePoints(Points& points, Triangles& triangles)
+{
+  const Index n = points.rows();
+  std::vector<Index> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), Index(0));
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (points(a, k) != points(b, k))
+      {
+        return points(a, k) < points(b, k);
+      }
+    }
+    return false;
+  });
+  // Each point's representative is the lowest index with its coordinates (stable sort puts
+  // it first in its run). NaN coordinates never compare equal, so such points stay apart.
+  std::vector<Index> representative(static_cast<size_t>(n));
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    const bool same = i > 0 && points.row(order[i]) == points.row(order[i - 1]);
+    representative[order[i]] = same ? representative[order[i - 1]] : order[i];
+  }
+  MeshProvenance provenance;
+  std::vector<Index> newIndex(static_cast<size_t>(n), -1);
+  for (Index i = 0; i < n; ++i)
+  {
+    if (representative[i] == i)
+    {
+      newIndex[i] = static_cast<Index>(provenance.PointSource.size());
+      provenance.PointSource.push_back(i);
+    }
+  }
+  Points merged(static_cast<Index>(provenance.PointSource.size()), 3);
+  for (size_t i = 0; i < provenance.PointSource.size(); ++i)
+  {
+    merged.row(static_cast<Index>(i)) = points.row(provenance.PointSource[i]);
+  }
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    bool inRange = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index v = triangles(t, k);
+      inRange = inRange && v >= 0 && v < n;
+      triangles(t, k) = (v >= 0 && v < n) ? newIndex[representative[v]] : v;
+    }
+    const Index a = triangles(t, 0), b = triangles(t, 1), c = triangles(t, 2);
+    if (!inRange || (a != b && b != c && c != a))
+    {
+      provenance.TriangleSource.push_back(t); // out-of-range triangles are left for Analyze
+    }
+  }
+  triangles = SelectRows(triangles, provenance.TriangleSource);
+  points.swap(merged);
+  return provenance;
+}
+
+MeshProvenance ExtractLargestComponent(Points& points, Triangles& triangles)
+{
+  const std::vector<char> valid = ValidTriangles(triangles, points.rows());
+  UnionFind components(points.rows());
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (valid[t])
+    {
+      components.Union(triangles(t, 0), triangles(t, 1));
+      components.Union(triangles(t, 0), triangles(t, 2));
+    }
+  }
+  std::unordered_map<Index, Index> trianglesPerComponent;
+  Index largest = -1, largestCount = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (valid[t])
+    {
+      const Index root = components.Find(triangles(t, 0));
+      const Index count = ++trianglesPerComponent[root];
+      if (count > largestCount)
+      {
+        largestCount = count;
+        largest = root;
+      }
+    }
+  }
+  MeshProvenance provenance;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (valid[t] && components.Find(triangles(t, 0)) == largest)
+    {
+      provenance.TriangleSource.push_back(t);
+    }
+  }
+  triangles = SelectRows(triangles, provenance.TriangleSource);
+  CompactPoints(points, triangles, provenance);
+  return provenance;
+}
+
+Index FillHoles(Points& points, Triangles& triangles, MeshProvenance* provenance)
+{
+  const std::vector<char> valid = ValidTriangles(triangles, points.rows());
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  std::vector<std::vector<Index>> loops;
+  std::vector<char> closed;
+  TraceBoundaryLoops(halfEdges, triangles, loops, closed);
+
+  std::vector<Eigen::Vector3d> newPoints;
+  std::vector<std::array<Index, 3>> newTriangles;
+  Index filled = 0;
+  for (size_t l = 0; l < loops.size(); ++l)
+  {
+    const std::vector<Index>& loop = loops[l];
+    // A loop that visits a vertex twice would need the fan to pass through that vertex
+    // twice: leave it (and open chains) alone rather than create a non-manifold vertex.
+    std::vector<Index> sorted = loop;
+    std::sort(sorted.begin(), sorted.end());
+    if (!closed[l] || loop.size() < 3 ||
+      std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    {
+      continue;
+    }
+    ++filled;
+    // The loop runs along its triangles' direction, so the patch runs against it.
+    if (loop.size() == 3)
+    {
+      newTriangles.push_back({ loop[0], loop[2], loop[1] });
+      continue;
+    }
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (Index v : loop)
+    {
+      centroid += points.row(v).transpose();
+    }
+    const Index center = points.rows() + static_cast<Index>(newPoints.size());
+    newPoints.push_back(centroid / static_cast<double>(loop.size()));
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      newTriangles.push_back({ loop[(i + 1) % loop.size()], loop[i], center });
+    }
+  }
+
+  if (provenance)
+  {
+    provenance->PointSource.resize(static_cast<size_t>(points.rows()));
+    std::iota(provenance->PointSource.begin(), provenance->PointSource.end(), Index(0));
+    provenance->PointSource.resize(provenance->PointSource.size() + newPoints.size(), -1);
+    provenance->TriangleSource.resize(static_cast<size_t>(triangles.rows()));
+    std::iota(provenance->TriangleSource.begin(), provenance->TriangleSource.end(), Index(0));
+    provenance->TriangleSource.resize(
+      provenance->TriangleSource.size() + newTriangles.size(), -1);
+  }
+  const Index oldPoints = points.rows(), oldTriangles = triangles.rows();
+  points.conservativeResize(oldPoints + static_cast<Index>(newPoints.size()), 3);
+  for (size_t i = 0; i < newPoints.size(); ++i)
+  {
+    points.row(oldPoints + static_cast<Index>(i)) = newPoints[i].transpose();
+  }
+  triangles.conservativeResize(oldTriangles + static_cast<Index>(newTriangles.size()), 3);
+  for (size_t i = 0; i < newTriangles.size(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      triangles(oldTriangles + static_cast<Index>(i), k) = newTriangles[i][k];
+    }
+  }
+  return filled;
+}
+
+bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
+{
+  if (reversedTriangles)
+  {
+    *reversedTriangles = 0;
+  }
+  Index numberOfPoints = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    numberOfPoints = std::max(numberOfPoints, triangles.row(t).maxCoeff() + 1);
+  }
+  const std::vector<char> valid = ValidTriangles(triangles, numberOfPoints);
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+
+  // Triangle adjacency across two-triangle edges, with whether the pair currently agrees.
+  struct Neighbour
+  {
+    Index Triangle;
+    bool SameDirection; // both traverse the shared edge the same way: orientations disagree
+  };
+  std::vector<std::vector<Neighbour>> adjacency(static_cast<size_t>(triangles.rows()));
+  bool manifold = true;
+  ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
+    if (end - begin > 2)
+    {
+      manifold = false;
+    }
+    else if (end - begin == 2)
+    {
+      const HalfEdge &x = halfEdges[begin], &y = halfEdges[begin + 1];
+      const bool same = x.From == y.From;
+      adjacency[x.Triangle].push_back({ y.Triangle, same });
+      adjacency[y.Triangle].push_back({ x.Triangle, same });
+    }
+  });
+  if (!manifold)
+  {
+    return false;
+  }
+  // Breadth-first: decide for each triangle whether to reverse it; a contradiction means
+  // the surface is not orientable (a Moebius strip, a Klein bottle).
+  std::vector<signed char> reverse(static_cast<size_t>(triangles.rows()), -1);
+  std::vector<Index> queue;
+  for (Index seed = 0; seed < triangles.rows(); ++seed)
+  {
+    if (!valid[seed] || reverse[seed] >= 0)
+    {
+      continue;
+    }
+    reverse[seed] = 0;
+    queue.assign(1, seed);
+    for (size_t q = 0; q < queue.size(); ++q)
+    {
+      const Index t = queue[q];
+      for (const Neighbour& nb : adjacency[t])
+      {
+        const signed char wanted =
+          static_cast<signed char>(nb.SameDirection ? 1 - reverse[t] : reverse[t]);
+        if (reverse[nb.Triangle] < 0)
+        {
+          reverse[nb.Triangle] = wanted;
+          queue.push_back(nb.Triangle);
+        }
+        else if (reverse[nb.Triangle] != wanted)
+        {
+          return false;
+        }
+      }
+    }
+  }
+  Index count = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (reverse[t] == 1)
+    {
+      std::swap(triangles(t, 1), triangles(t, 2));
+      ++count;
+    }
+  }
+  if (reversedTriangles)
+  {
+    *reversedTriangles = count;
+  }
+  return true;
+}
+}

@@ -1,0 +1,164 @@
+#include "SqueezedRegionRefinement.h"
+
+#include <Eigen/SparseLU>
+
+#include <cmath>
+
+#include <vector>
+
+namespace mobius
+{
+namespace
+{
+// Floater's mean-value weights of the original surface, row i: w_ij = (tan(a/2) + tan(b/2)) /
+// |p_i - p_j| with a, b the angles at p_i next to edge ij. Positive for every triangulation,
+// which is what makes the re-solved region fold-free (Floater 2003); not symmetric.
+SparseMatrix MeanValueWeights(const Points& p, const Triangles& triangles)
+{
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(6 * static_cast<size_t>(triangles.rows()));
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index i = triangles(t, k), j = triangles(t, (k + 1) % 3),
+                  l = triangles(t, (k + 2) % 3);
+      const Eigen::RowVector3d eij = p.row(j) - p.row(i), eil = p.row(l) - p.row(i);
+      const double lij = eij.norm(), lil = eil.norm();
+      const double cosine = std::max(-1.0, std::min(1.0, eij.dot(eil) / (lij * lil)));
+      const double halfTangent = std::tan(0.5 * std::acos(cosine));
+      entries.emplace_back(i, j, halfTangent / lij);
+      entries.emplace_back(i, l, halfTangent / lil);
+    }
+  }
+  SparseMatrix w(p.rows(), p.rows());
+  w.setFromTriplets(entries.begin(), entries.end());
+  return SparseMatrix(w.transpose()); // column i holds row i's weights
+}
+}
+
+SqueezedRegionRefinementResult RefineSqueezedRegions(
+  Points& x, const Triangles& triangles, const Points& original, double largestThreshold)
+{
+  SqueezedRegionRefinementResult result;
+  const Index n = x.rows();
+  const SparseMatrix weights = MeanValueWeights(original, triangles);
+  if (!Eigen::Map<const Vector>(weights.valuePtr(), weights.nonZeros()).allFinite())
+  {
+    result.Success = false;
+    return result;
+  }
+  std::vector<char> refined(static_cast<size_t>(n), 0);
+  for (double tau = largestThreshold; tau > 1e-15; tau *= 1e-2)
+  {
+    // Longest edge at each vertex (over the mesh's triangles).
+    Vector longest = Vector::Zero(n);
+    for (Index t = 0; t < triangles.rows(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
+        const double length = (x.row(a) - x.row(b)).norm();
+        longest[a] = std::max(longest[a], length);
+        longest[b] = std::max(longest[b], length);
+      }
+    }
+    std::vector<Index> local(static_cast<size_t>(n), -1), members;
+    for (Index i = 0; i < n; ++i)
+    {
+      if (longest[i] < tau)
+      {
+        local[i] = static_cast<Index>(members.size());
+        members.push_back(i);
+      }
+    }
+    if (members.empty())
+    {
+      break;
+    }
+    const Index m = static_cast<Index>(members.size());
+    // Regions (connected components of the members) and each one's local origin c: the
+    // position of its first member. Rows of different regions never couple, so one
+    // factorization serves them all.
+    std::vector<Index> region(static_cast<size_t>(m), -1), stack;
+    std::vector<Eigen::RowVector3d> origin;
+    for (Index s = 0; s < m; ++s)
+    {
+      if (region[s] >= 0)
+      {
+        continue;
+      }
+      const Index id = static_cast<Index>(origin.size());
+      origin.push_back(x.row(members[s]));
+      region[s] = id;
+      stack.assign(1, s);
+      while (!stack.empty())
+      {
+        const Index r = stack.back();
+        stack.pop_back();
+        for (SparseMatrix::InnerIterator it(weights, members[r]); it; ++it)
+        {
+          const Index j = local[it.row()];
+          if (j >= 0 && region[j] < 0)
+          {
+            region[j] = id;
+            stack.push_back(j);
+          }
+        }
+      }
+    }
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 3);
+    for (Index r = 0; r < m; ++r)
+    {
+      const Index i = members[r];
+      const Eigen::RowVector3d c = origin[region[r]];
+      // Row r: sum_j w_ij (x_i - x_j) = 0, i.e. x_i is the weighted average of its
+      // neighbours.
+      double total = 0.0;
+      for (SparseMatrix::InnerIterator it(weights, i); it; ++it)
+      {
+        total += it.value();
+        const Index j = local[it.row()];
+        if (j >= 0)
+        {
+          entries.emplace_back(r, j, -it.value());
+        }
+        else
+        {
+          rhs.row(r) += it.value() * (x.row(it.row()) - c); // boundary values move right
+        }
+      }
+      entries.emplace_back(r, r, total);
+    }
+    SparseMatrix system(m, m);
+    system.setFromTriplets(entries.begin(), entries.end());
+    system.makeCompressed();
+    Eigen::SparseLU<SparseMatrix> solver;
+    solver.compute(system);
+    if (solver.info() != Eigen::Success)
+    {
+      result.Success = false;
+      break;
+    }
+    const Eigen::MatrixXd y = solver.solve(rhs);
+    if (!y.allFinite())
+    {
+      result.Success = false;
+      break;
+    }
+    for (Index r = 0; r < m; ++r)
+    {
+      const Eigen::RowVector3d p = origin[region[r]] + y.row(r);
+      x.row(members[r]) = p / p.norm();
+      refined[members[r]] = 1;
+    }
+    ++result.Levels;
+  }
+  for (char r : refined)
+  {
+    result.RefinedVertices += r;
+  }
+  return result;
+}
+}

@@ -1,0 +1,389 @@
+#include "vtkSphericalConformalMap.h"
+
+#include "ConformalMap.h"
+#include "MeshTopology.h"
+#include "MobiusCentering.h"
+#include "vtkSphericalMapData.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
+
+#include <Eigen/Geometry>
+
+#include <sstream>
+
+vtkStandardNewMacro(vtkSphericalConformalMap);
+
+namespace
+{
+// Where each point and triangle of the repaired mesh came from in the triangulated input
+// (-1: created by a repair), composed over the repairs.
+struct Provenance
+{
+  std::vector<mobius::Index> Points;
+  std::vector<mobius::Index> Triangles;
+
+  Provenance(mobius::Index points, mobius::Index triangles)
+    : Points(points)
+    , Triangles(triangles)
+  {
+    for (mobius::Index i = 0; i < points; ++i)
+    {
+      this->Points[i] = i;
+    }
+    for (mobius::Index t = 0; t < triangles; ++t)
+    {
+      this->Triangles[t] = t;
+    }
+  }
+
+  static std::vector<mobius::Index> Compose(
+    const std::vector<mobius::Index>& before, const std::vector<mobius::Index>& step)
+  {
+    std::vector<mobius::Index> composed(step.size());
+    for (size_t i = 0; i < step.size(); ++i)
+    {
+      composed[i] = step[i] >= 0 ? before[step[i]] : -1;
+    }
+    return composed;
+  }
+
+  void Apply(const mobius::MeshProvenance& step)
+  {
+    this->Points = Compose(this->Points, step.PointSource);
+    this->Triangles = Compose(this->Triangles, step.TriangleSource);
+  }
+};
+
+// Drops points no triangle uses (e.g. the copies left by merging duplicates).
+mobius::MeshProvenance RemoveUnusedPoints(mobius::Points& points, mobius::Triangles& triangles)
+{
+  std::vector<mobius::Index> newIndex(points.rows(), -1);
+  mobius::MeshProvenance provenance;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      newIndex[triangles(t, k)] = 0;
+    }
+  }
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    if (newIndex[i] == 0)
+    {
+      newIndex[i] = static_cast<mobius::Index>(provenance.PointSource.size());
+      provenance.PointSource.push_back(i);
+    }
+  }
+  mobius::Points kept(provenance.PointSource.size(), 3);
+  for (size_t i = 0; i < provenance.PointSource.size(); ++i)
+  {
+    kept.row(i) = points.row(provenance.PointSource[i]);
+  }
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    provenance.TriangleSource.push_back(t);
+    for (int k = 0; k < 3; ++k)
+    {
+      triangles(t, k) = newIndex[triangles(t, k)];
+    }
+  }
+  points.swap(kept);
+  return provenance;
+}
+
+double SignedVolume(const mobius::Points& points, const mobius::Triangles& triangles)
+{
+  double volume = 0;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::Vector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
+                          c = points.row(triangles(t, 2));
+    volume += a.dot(b.cross(c)) / 6.0;
+  }
+  return volume;
+}
+
+bool NeedsTriangulation(vtkPolyData* input)
+{
+  if (input->GetNumberOfStrips() > 0 || input->GetNumberOfVerts() > 0 ||
+    input->GetNumberOfLines() > 0)
+  {
+    return true;
+  }
+  vtkCellArray* polys = input->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    if (polys->GetCellSize(c) != 3)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Copies attribute tuples from `source` to `target` following `provenance`; rows created
+// by a repair get zeros.
+void CopyAttributes(vtkDataSetAttributes* source, vtkDataSetAttributes* target,
+  const std::vector<mobius::Index>& provenance)
+{
+  target->CopyAllocate(source, static_cast<vtkIdType>(provenance.size()));
+  for (size_t i = 0; i < provenance.size(); ++i)
+  {
+    if (provenance[i] >= 0)
+    {
+      target->CopyData(source, provenance[i], static_cast<vtkIdType>(i));
+    }
+    else
+    {
+      target->NullData(static_cast<vtkIdType>(i));
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSphericalConformalMap::vtkSphericalConformalMap() = default;
+
+//------------------------------------------------------------------------------
+int vtkSphericalConformalMap::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "Missing input or output polydata.");
+    return 0;
+  }
+  if (input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< "Cannot map the mesh to the sphere: the input has no points.");
+    return 0;
+  }
+  if (input->GetNumberOfPolys() == 0 && input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro(<< "Cannot map the mesh to the sphere: the input has no triangles.");
+    return 0;
+  }
+
+  // Triangles only: split polygons and strips, drop vertices and lines (with their data).
+  vtkSmartPointer<vtkPolyData> surface = input;
+  if (NeedsTriangulation(input))
+  {
+    if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)
+    {
+      vtkWarningMacro(<< "Ignoring " << input->GetNumberOfVerts() << " vertex and "
+                      << input->GetNumberOfLines() << " line cells of the input.");
+    }
+    vtkNew<vtkPolyData> shallow;
+    shallow->ShallowCopy(input);
+    vtkNew<vtkTriangleFilter> triangulate;
+    triangulate->SetInputData(shallow);
+    triangulate->PassVertsOff();
+    triangulate->PassLinesOff();
+    triangulate->Update();
+    surface = triangulate->GetOutput();
+  }
+
+  mobius::Points points;
+  mobius::Triangles triangles;
+  std::string error = mobius::vtk::ExtractPoints(surface, points);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractTriangles(surface, triangles);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot map the mesh to the sphere: " << error << ".");
+    return 0;
+  }
+
+  // Repairs that change nothing a user could want kept: merge exact duplicates, drop
+  // unused points, orient consistently. FillHoles and KeepLargestComponent on request.
+  Provenance provenance(points.rows(), triangles.rows());
+  mobius::MeshTopologyReport report = mobius::AnalyzeMeshTopology(points, triangles);
+  const mobius::Index duplicates = report.DuplicatePoints;
+  if (duplicates > 0)
+  {
+    provenance.Apply(mobius::MergeDuplicatePoints(points, triangles));
+  }
+  if (this->KeepLargestComponent && report.ConnectedComponents > 1)
+  {
+    provenance.Apply(mobius::ExtractLargestComponent(points, triangles));
+  }
+  provenance.Apply(RemoveUnusedPoints(points, triangles));
+  report = mobius::AnalyzeMeshTopology(points, triangles);
+  mobius::Index filledHoles = 0;
+  if (this->FillHoles && report.BoundaryLoops > 0)
+  {
+    mobius::MeshProvenance filled;
+    filledHoles = mobius::FillHoles(points, triangles, &filled);
+    provenance.Apply(filled);
+  }
+  mobius::OrientConsistently(triangles);
+  report = mobius::AnalyzeMeshTopology(points, triangles);
+  if (!report.IsTopologicalSphere())
+  {
+    std::ostringstream message;
+    message << "Cannot map the mesh to the sphere: " << mobius::DescribeTopologyProblems(report);
+    if (report.BoundaryLoops > 0 && !this->FillHoles)
+    {
+      message << ". Set FillHoles to close the holes";
+    }
+    if (report.ConnectedComponents > 1 && !this->KeepLargestComponent)
+    {
+      message << ". Set KeepLargestComponent to map only the largest component";
+    }
+    vtkErrorMacro(<< message.str() << ".");
+    return 0;
+  }
+  if (report.UnusedPoints > 0 || points.rows() != input->GetNumberOfPoints())
+  {
+    vtkWarningMacro(<< "The output has " << points.rows() << " points, the input "
+                    << input->GetNumberOfPoints()
+                    << " (duplicates merged, unused points dropped, holes filled).");
+  }
+  // The flow keeps the orientation of the triangles; make them face outward so the map
+  // comes out orientation-preserving and outward-facing on the sphere.
+  const bool reversed = SignedVolume(points, triangles) < 0;
+  if (reversed)
+  {
+    triangles.col(1).swap(triangles.col(2));
+  }
+
+  mobius::ConformalMapParameters parameters;
+  parameters.TimeStep = this->TimeStep;
+  parameters.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+  parameters.ConvergenceTolerance = this->ConvergenceTolerance;
+  parameters.IntrinsicDelaunay = this->IntrinsicDelaunay;
+  parameters.FlipRepairPasses = this->FlipRepairPasses;
+  parameters.Progress = [this](double fraction) {
+    this->UpdateProgress(fraction);
+    return !this->GetAbortExecute();
+  };
+  mobius::Vector surfaceAreas(triangles.rows());
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::Vector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
+                          c = points.row(triangles(t, 2));
+    surfaceAreas[t] = 0.5 * (b - a).cross(c - a).norm();
+  }
+  std::string centeringError;
+  if (this->CenterBetweenSteps)
+  {
+    // Paper Section 7.1: project the current shape onto the sphere and Möbius-center it, so
+    // the flow cannot drift toward a map that crowds everything into one point.
+    parameters.BetweenSteps = [&](mobius::Points& positions, int) {
+      for (Eigen::Index i = 0; i < positions.rows(); ++i)
+      {
+        positions.row(i).normalize();
+      }
+      mobius::MobiusCenteringResult centering;
+      if (!mobius::CenterSphericalMap(positions, triangles, surfaceAreas, {}, centering))
+      {
+        centeringError = centering.Error;
+        return false;
+      }
+      return true;
+    };
+  }
+
+  const mobius::ConformalMapResult result =
+    mobius::ComputeSphericalConformalMap(points, triangles, parameters);
+  if (!result.Success)
+  {
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Conformal map failed: " << result.Message
+                    << (centeringError.empty() ? "" : " (centering: " + centeringError + ")")
+                    << ".");
+    }
+    return 0;
+  }
+  if (!result.Converged)
+  {
+    vtkWarningMacro(<< "The flow stopped after " << result.Iterations
+                    << " steps with relative change " << result.RelativeChange
+                    << " above the tolerance " << this->ConvergenceTolerance << ".");
+  }
+  if (result.Distortion.FlippedTriangles > 0)
+  {
+    vtkWarningMacro(<< result.Distortion.FlippedTriangles
+                    << " triangles are flipped on the sphere.");
+  }
+
+  // Assemble the spherical map.
+  mobius::vtk::SetPoints(output, result.SpherePoints);
+  vtkNew<vtkCellArray> polys;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const vtkIdType ids[3] = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPolys(polys);
+  CopyAttributes(surface->GetPointData(), output->GetPointData(), provenance.Points);
+  CopyAttributes(surface->GetCellData(), output->GetCellData(), provenance.Triangles);
+  output->GetFieldData()->ShallowCopy(input->GetFieldData());
+
+  vtkNew<vtkDoubleArray> surfacePoints;
+  surfacePoints->SetName(mobius::vtk::SurfacePointsArrayName);
+  surfacePoints->SetNumberOfComponents(3);
+  surfacePoints->SetNumberOfTuples(points.rows());
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    surfacePoints->SetTuple3(i, points(i, 0), points(i, 1), points(i, 2));
+  }
+  output->GetPointData()->AddArray(surfacePoints);
+  vtkNew<vtkDoubleArray> areas;
+  areas->SetName(mobius::vtk::SurfaceAreaArrayName);
+  areas->SetNumberOfTuples(triangles.rows());
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    areas->SetValue(t, surfaceAreas[t]);
+  }
+  output->GetCellData()->AddArray(areas);
+
+  vtkFieldData* fieldData = output->GetFieldData();
+  using mobius::vtk::SetFieldValue;
+  SetFieldValue(fieldData, "ConformalFlowIterations", result.Iterations);
+  SetFieldValue(fieldData, "ConformalFlowRelativeChange", result.RelativeChange);
+  SetFieldValue(fieldData, "ConformalFlowConverged", result.Converged ? 1 : 0);
+  SetFieldValue(fieldData, "FlippedTriangles", static_cast<double>(result.Distortion.FlippedTriangles));
+  SetFieldValue(fieldData, "MeanQuasiConformalDistortion", result.Distortion.MeanQuasiConformal);
+  SetFieldValue(fieldData, "MaxQuasiConformalDistortion", result.Distortion.MaxQuasiConformal);
+  const double areaRange[2] = { result.Distortion.MinAreaRatio, result.Distortion.MaxAreaRatio };
+  mobius::vtk::SetFieldValues(fieldData, "AreaDistortionRange", areaRange, 2);
+  SetFieldValue(fieldData, "IntrinsicDelaunayFlips", static_cast<double>(result.IntrinsicFlips));
+  SetFieldValue(fieldData, "MergedDuplicatePoints", static_cast<double>(duplicates));
+  SetFieldValue(fieldData, "FilledHoles", static_cast<double>(filledHoles));
+  SetFieldValue(fieldData, "ReversedTriangleOrientation", reversed ? 1 : 0);
+  SetFieldValue(
+    fieldData, "FlipRepairMovedVertices", static_cast<double>(result.FlipRepair.MovedVertices));
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSphericalConformalMap::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+  os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
+  os << indent << "CenterBetweenSteps: " << this->CenterBetweenSteps << "\n";
+  os << indent << "IntrinsicDelaunay: " << this->IntrinsicDelaunay << "\n";
+  os << indent << "FlipRepairPasses: " << this->FlipRepairPasses << "\n";
+  os << indent << "FillHoles: " << this->FillHoles << "\n";
+  os << indent << "KeepLargestComponent: " << this->KeepLargestComponent << "\n";
+}

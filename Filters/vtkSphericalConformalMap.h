@@ -1,0 +1,148 @@
+/**
+ * @class   vtkSphericalConformalMap
+ * @brief   Conformal map of a closed genus-0 triangle mesh onto the unit sphere.
+ *
+ * Conformalized mean curvature flow (Kazhdan, Solomon & Ben-Chen, SGP 2012): the cotangent
+ * stiffness L is built once from the input (by default on its intrinsic Delaunay
+ * triangulation, which keeps L well behaved on needle triangles), the mass matrix M_t from
+ * the current shape, and each backward-Euler step solves (M_t + TimeStep L) x = M_t x_t,
+ * then recenters and rescales to unit area. The flow stops when a step moves the shape by
+ * less than ConvergenceTolerance (relative), or after MaximumNumberOfIterations steps; the
+ * points are then projected radially onto the unit sphere. Optionally the map is Möbius
+ * centered between steps (paper Section 7.1), which stops the drift of the flow toward a
+ * point.
+ *
+ * Input: a vtkPolyData surface. Polygons with more than three points and triangle strips
+ * are triangulated; points with exactly equal coordinates (a triangle soup, STL files) are
+ * merged; triangles are reoriented consistently, and reversed if they face inward. The
+ * mesh must then be a closed, edge- and vertex-manifold, connected surface of genus 0,
+ * with finite coordinates and no zero-area triangles; otherwise the filter fails with an
+ * error naming every problem found (holes, non-manifold edges or vertices, components,
+ * genus). Options repair two of them: FillHoles closes boundary loops,
+ * KeepLargestComponent drops all but the largest connected component.
+ *
+ * Output: the spherical map, i.e. the (repaired) mesh with points on the unit sphere,
+ * carrying:
+ * - point data `SurfacePoints` (3 doubles): the vertex on the original surface;
+ * - cell data `SurfaceArea` (double): the triangle's area on the original surface;
+ * - every point and cell array of the input (points and triangles created by FillHoles
+ *   get zero values);
+ * - field data: `ConformalFlowIterations`, `ConformalFlowRelativeChange`,
+ *   `ConformalFlowConverged` (0/1), `FlippedTriangles` (triangles with det(a,b,c) <= 0 on
+ *   the sphere), `MeanQuasiConformalDistortion` (area-weighted mean over triangles of the
+ *   ratio of the singular values of the linear map from the surface triangle to the
+ *   spherical chord triangle; 1 is conformal), `MaxQuasiConformalDistortion`,
+ *   `AreaDistortionRange` (2 doubles: min and max of spherical share / surface share of
+ *   area per triangle), `IntrinsicDelaunayFlips`, `MergedDuplicatePoints`, `FilledHoles`,
+ *   `ReversedTriangleOrientation` (0/1), `FlipRepairMovedVertices`.
+ *
+ * @sa vtkMobiusCenter
+ */
+#ifndef vtkSphericalConformalMap_h
+#define vtkSphericalConformalMap_h
+
+#include "vtkMobiusRegistrationFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSphericalConformalMap : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSphericalConformalMap* New();
+  vtkTypeMacro(vtkSphericalConformalMap, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Backward-Euler step of the flow, for a surface scaled to unit area with the standard
+   * cot/2 stiffness. Default 0.4.
+   */
+  vtkSetClampMacro(TimeStep, double, 1e-6, 1e6);
+  vtkGetMacro(TimeStep, double);
+  ///@}
+
+  ///@{
+  /**
+   * Upper bound on flow steps. Default 100.
+   */
+  vtkSetClampMacro(MaximumNumberOfIterations, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Stop when a step moves the shape (area-weighted RMS, relative to its size) by less
+   * than this. Default 1e-4.
+   */
+  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(ConvergenceTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Möbius-center the map between flow steps (paper Section 7.1). Default off.
+   */
+  vtkSetMacro(CenterBetweenSteps, vtkTypeBool);
+  vtkGetMacro(CenterBetweenSteps, vtkTypeBool);
+  vtkBooleanMacro(CenterBetweenSteps, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Build the stiffness on the intrinsic Delaunay triangulation of the input, which
+   * keeps cotangent weights bounded on needle triangles. Default on.
+   */
+  vtkSetMacro(IntrinsicDelaunay, vtkTypeBool);
+  vtkGetMacro(IntrinsicDelaunay, vtkTypeBool);
+  vtkBooleanMacro(IntrinsicDelaunay, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Sweeps of local repair of triangles left flipped on the sphere by the flow (each
+   * moves vertices of flipped triangles inside their neighbourhood); 0 disables it.
+   * Default 100.
+   */
+  vtkSetClampMacro(FlipRepairPasses, int, 0, VTK_INT_MAX);
+  vtkGetMacro(FlipRepairPasses, int);
+  ///@}
+
+  ///@{
+  /**
+   * Close the input's holes (boundary loops) instead of failing. Default off.
+   */
+  vtkSetMacro(FillHoles, vtkTypeBool);
+  vtkGetMacro(FillHoles, vtkTypeBool);
+  vtkBooleanMacro(FillHoles, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Keep only the largest connected component instead of failing when there are
+   * several. Default off.
+   */
+  vtkSetMacro(KeepLargestComponent, vtkTypeBool);
+  vtkGetMacro(KeepLargestComponent, vtkTypeBool);
+  vtkBooleanMacro(KeepLargestComponent, vtkTypeBool);
+  ///@}
+
+protected:
+  vtkSphericalConformalMap();
+  ~vtkSphericalConformalMap() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double TimeStep = 0.4;
+  int MaximumNumberOfIterations = 100;
+  double ConvergenceTolerance = 1e-4;
+  vtkTypeBool CenterBetweenSteps = false;
+  vtkTypeBool IntrinsicDelaunay = true;
+  int FlipRepairPasses = 100;
+  vtkTypeBool FillHoles = false;
+  vtkTypeBool KeepLargestComponent = false;
+
+private:
+  vtkSphericalConformalMap(const vtkSphericalConformalMap&) = delete;
+  void operator=(const vtkSphericalConformalMap&) = delete;
+};
+
+#endif

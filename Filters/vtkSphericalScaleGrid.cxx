@@ -1,0 +1,224 @@
+#include "vtkSphericalScaleGrid.h"
+
+#include "ScaleFactorSignal.h"
+#include "vtkSphericalMapData.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkSphericalScaleGrid);
+
+namespace
+{
+// Point ids of the closed grid sphere: the north pole, N - 1 rings of N points, the south
+// pole. Ring r (1..N-1) lies at theta = pi r / N; point i of a ring at phi = 2 pi i / N.
+struct GridPointIds
+{
+  int N;
+  vtkIdType North() const { return 0; }
+  vtkIdType South() const { return 1 + static_cast<vtkIdType>(N - 1) * N; }
+  vtkIdType Ring(int r, int i) const { return 1 + static_cast<vtkIdType>(r - 1) * N + (i % N); }
+};
+
+// The grid sphere's cells, in grid order j*N + i, outward oriented.
+vtkNew<vtkCellArray> MakeGridCells(const GridPointIds& ids)
+{
+  const int N = ids.N;
+  vtkNew<vtkCellArray> cells;
+  for (int j = 0; j < N; ++j)
+  {
+    for (int i = 0; i < N; ++i)
+    {
+      if (j == 0)
+      {
+        const vtkIdType tri[3] = { ids.North(), ids.Ring(1, i), ids.Ring(1, i + 1) };
+        cells->InsertNextCell(3, tri);
+      }
+      else if (j == N - 1)
+      {
+        const vtkIdType tri[3] = { ids.Ring(N - 1, i), ids.South(), ids.Ring(N - 1, i + 1) };
+        cells->InsertNextCell(3, tri);
+      }
+      else
+      {
+        const vtkIdType quad[4] = { ids.Ring(j, i), ids.Ring(j + 1, i), ids.Ring(j + 1, i + 1),
+          ids.Ring(j, i + 1) };
+        cells->InsertNextCell(4, quad);
+      }
+    }
+  }
+  return cells;
+}
+
+// Grid point positions; with `values` (cell-centered, N*N), each point's radius is the mean
+// of |value| over its adjacent cells divided by the largest such mean.
+vtkNew<vtkPoints> MakeGridPoints(const GridPointIds& ids, const std::vector<double>* values)
+{
+  const int N = ids.N;
+  std::vector<double> radius(ids.South() + 1, 1.0);
+  if (values)
+  {
+    auto cell = [&](int j, int i) { return std::abs((*values)[j * N + ((i + N) % N)]); };
+    double north = 0, south = 0;
+    for (int i = 0; i < N; ++i)
+    {
+      north += cell(0, i) / N;
+      south += cell(N - 1, i) / N;
+    }
+    radius[ids.North()] = north;
+    radius[ids.South()] = south;
+    for (int r = 1; r < N; ++r)
+    {
+      for (int i = 0; i < N; ++i)
+      {
+        radius[ids.Ring(r, i)] =
+          0.25 * (cell(r - 1, i - 1) + cell(r - 1, i) + cell(r, i - 1) + cell(r, i));
+      }
+    }
+    double largest = 0;
+    for (double r : radius)
+    {
+      largest = std::max(largest, r);
+    }
+    for (double& r : radius)
+    {
+      r = largest > 0 ? r / largest : 1.0;
+    }
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(ids.South() + 1);
+  points->SetPoint(ids.North(), 0, 0, radius[ids.North()]);
+  points->SetPoint(ids.South(), 0, 0, -radius[ids.South()]);
+  for (int r = 1; r < N; ++r)
+  {
+    const double theta = vtkMath::Pi() * r / N;
+    for (int i = 0; i < N; ++i)
+    {
+      const double phi = 2 * vtkMath::Pi() * i / N;
+      const double rho = radius[ids.Ring(r, i)];
+      points->SetPoint(ids.Ring(r, i), rho * std::sin(theta) * std::cos(phi),
+        rho * std::sin(theta) * std::sin(phi), rho * std::cos(theta));
+    }
+  }
+  return points;
+}
+
+vtkNew<vtkDoubleArray> MakeCellArray(const char* name, const std::vector<double>& values)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    array->SetValue(static_cast<vtkIdType>(k), values[k]);
+  }
+  return array;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSphericalScaleGrid::vtkSphericalScaleGrid() = default;
+
+//------------------------------------------------------------------------------
+int vtkSphericalScaleGrid::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "Missing input or output polydata.");
+    return 0;
+  }
+  if (this->Resolution < 4 || this->Resolution % 2 != 0)
+  {
+    vtkErrorMacro(<< "Resolution must be even and at least 4 (it is " << this->Resolution << ").");
+    return 0;
+  }
+  mobius::Points points;
+  mobius::Triangles triangles;
+  mobius::Vector areas;
+  std::string error = mobius::vtk::ExtractPoints(input, points);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractTriangles(input, triangles);
+  }
+  if (error.empty() && triangles.rows() == 0)
+  {
+    error = "the input has no triangles";
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::CheckOnUnitSphere(points);
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractSurfaceAreas(input, areas);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot sample the scale factors: " << error << ".");
+    return 0;
+  }
+
+  mobius::ScaleFactorSignalParameters parameters;
+  parameters.Resolution = this->Resolution;
+  parameters.SmoothingTime = this->SmoothingTime;
+  parameters.Value = this->ValueMode == AREA_RATIO ? mobius::ScaleFactorValue::AreaRatio
+                                                   : mobius::ScaleFactorValue::SquareRootAreaRatio;
+  mobius::ScaleFactorSignal signal;
+  auto progress = [this](double fraction) {
+    this->UpdateProgress(0.9 * fraction);
+    return !this->GetAbortExecute();
+  };
+  if (!mobius::ComputeScaleFactorSignal(
+        points, triangles, areas, parameters, true, signal, error, progress))
+  {
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Cannot sample the scale factors: " << error << ".");
+    }
+    return 0;
+  }
+
+  const GridPointIds ids{ this->Resolution };
+  output->SetPoints(
+    MakeGridPoints(ids, this->DisplaceByValue ? &signal.SmoothedValues : nullptr));
+  output->SetPolys(MakeGridCells(ids));
+  output->GetCellData()->AddArray(MakeCellArray("ConformalFactor", signal.Grid.Values));
+  auto smoothed = MakeCellArray("ConformalFactorSmoothed", signal.SmoothedValues);
+  output->GetCellData()->AddArray(smoothed);
+  output->GetCellData()->SetActiveScalars("ConformalFactorSmoothed");
+
+  vtkFieldData* fieldData = output->GetFieldData();
+  mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
+  mobius::vtk::SetFieldValue(fieldData, "Bandwidth", this->Resolution / 2);
+  mobius::vtk::SetFieldValue(fieldData, "TotalArea", signal.Grid.TotalArea);
+  mobius::vtk::SetFieldValue(fieldData, "SmoothingTime", this->SmoothingTime);
+  mobius::vtk::SetFieldValue(fieldData, "ValueMode", this->ValueMode);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSphericalScaleGrid::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
+  os << indent << "ValueMode: " << this->ValueMode << "\n";
+  os << indent << "DisplaceByValue: " << this->DisplaceByValue << "\n";
+}

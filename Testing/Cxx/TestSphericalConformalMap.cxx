@@ -1,0 +1,297 @@
+// vtkSphericalConformalMap: quality on generated and real meshes, the repairs it makes, and
+// a clear error for every kind of input it cannot map.
+#include "MobiusTestUtilities.h"
+#include "vtkSphericalConformalMap.h"
+
+#include "vtkExecutive.h"
+#include "vtkIntArray.h"
+#include "vtkSurfaceMeshReader.h"
+
+#include <string>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> ToPolyData(const mobius::Points& points, const mobius::Triangles& triangles)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> vtkpoints;
+  vtkpoints->SetDataTypeToDouble();
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    vtkpoints->InsertNextPoint(points(i, 0), points(i, 1), points(i, 2));
+  }
+  vtkNew<vtkCellArray> polys;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const vtkIdType ids[3] = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+    polys->InsertNextCell(3, ids);
+  }
+  mesh->SetPoints(vtkpoints);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> Ellipsoid(int levels, double a, double b, double c)
+{
+  mobius::Points points;
+  mobius::Triangles triangles;
+  mobius::MakeIcosphere(levels, points, triangles);
+  points.col(0) *= a;
+  points.col(1) *= b;
+  points.col(2) *= c;
+  return ToPolyData(points, triangles);
+}
+
+vtkSmartPointer<vtkPolyData> Torus(int n, int m)
+{
+  mobius::Points points(n * m, 3);
+  mobius::Triangles triangles(2 * n * m, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const double u = 2 * vtkMath::Pi() * i / n, v = 2 * vtkMath::Pi() * j / m;
+      points.row(i * m + j) << (2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v);
+      const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
+                d = i * m + (j + 1) % m;
+      triangles.row(2 * a) << a, b, c;
+      triangles.row(2 * a + 1) << a, c, d;
+    }
+  }
+  return ToPolyData(points, triangles);
+}
+
+struct Outcome
+{
+  vtkSmartPointer<vtkPolyData> Output;
+  std::string Error;
+  std::string Warning;
+};
+
+Outcome Map(vtkPolyData* input, const std::function<void(vtkSphericalConformalMap*)>& configure = {})
+{
+  vtkNew<vtkSphericalConformalMap> map;
+  mobius_test::MessageCatcher catcher(map);
+  mobius_test::MessageCatcher executiveCatcher(map->GetExecutive());
+  if (configure)
+  {
+    configure(map);
+  }
+  map->SetInputData(input);
+  map->Update();
+  Outcome outcome;
+  outcome.Output = map->GetOutput();
+  outcome.Error = catcher.Error;
+  outcome.Warning = catcher.Warning;
+  return outcome;
+}
+
+int ExpectError(vtkPolyData* input, const std::vector<std::string>& words)
+{
+  int failures = 0;
+  const Outcome outcome = Map(input);
+  for (const auto& word : words)
+  {
+    if (outcome.Error.find(word) == std::string::npos)
+    {
+      std::cerr << "expected an error containing '" << word << "', got '" << outcome.Error << "'\n";
+      ++failures;
+    }
+  }
+  MOBIUS_EXPECT(outcome.Output->GetNumberOfPoints() == 0);
+  return failures;
+}
+
+// A valid spherical map: every point on the unit sphere, no flips, the contract's arrays.
+int ExpectGoodMap(const Outcome& outcome, vtkIdType points, double maxMeanQC)
+{
+  int failures = 0;
+  vtkPolyData* out = outcome.Output;
+  if (!outcome.Error.empty())
+  {
+    std::cerr << "unexpected error: " << outcome.Error << "\n";
+    return 1;
+  }
+  MOBIUS_EXPECT(out->GetNumberOfPoints() == points);
+  double radiusError = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    radiusError = std::max(radiusError, std::abs(vtkMath::Norm(p) - 1));
+  }
+  MOBIUS_EXPECT(radiusError < 1e-12);
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "FlippedTriangles") == 0);
+  const double qc = mobius_test::FieldValue(out, "MeanQuasiConformalDistortion");
+  if (!(qc >= 1 && qc <= maxMeanQC))
+  {
+    std::cerr << "mean quasi-conformal distortion " << qc << " not in [1, " << maxMeanQC << "]\n";
+    ++failures;
+  }
+  MOBIUS_EXPECT(out->GetPointData()->GetArray("SurfacePoints") != nullptr);
+  MOBIUS_EXPECT(out->GetCellData()->GetArray("SurfaceArea") != nullptr);
+  return failures;
+}
+
+int TestMaps()
+{
+  int failures = 0;
+  // An ellipsoid: smooth, so its discrete conformal map is close to conformal.
+  auto ellipsoid = Ellipsoid(4, 1.0, 1.6, 0.7);
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  for (vtkIdType i = 0; i < ellipsoid->GetNumberOfPoints(); ++i)
+  {
+    label->InsertNextValue(static_cast<int>(i));
+  }
+  ellipsoid->GetPointData()->AddArray(label);
+  Outcome outcome = Map(ellipsoid);
+  failures += ExpectGoodMap(outcome, ellipsoid->GetNumberOfPoints(), 1.05);
+  auto labels = vtkIntArray::SafeDownCast(outcome.Output->GetPointData()->GetArray("Label"));
+  MOBIUS_EXPECT(labels && labels->GetValue(17) == 17);
+  MOBIUS_EXPECT(mobius_test::FieldValue(outcome.Output, "ConformalFlowConverged") == 1);
+  MOBIUS_EXPECT(mobius_test::FieldValue(outcome.Output, "ReversedTriangleOrientation") == 0);
+  // SurfacePoints are the input points, in order.
+  double p[3];
+  outcome.Output->GetPointData()->GetArray("SurfacePoints")->GetTuple(5, p);
+  double q[3];
+  ellipsoid->GetPoint(5, q);
+  MOBIUS_EXPECT(vtkMath::Distance2BetweenPoints(p, q) == 0);
+
+  // Inward-facing triangles: reversed, and the map still has no flipped triangle.
+  auto inward = Ellipsoid(3, 1.0, 1.3, 0.8);
+  inward->ReverseCell(0); // reversal of the whole mesh below, one cell at a time
+  for (vtkIdType c = 1; c < inward->GetNumberOfCells(); ++c)
+  {
+    inward->ReverseCell(c);
+  }
+  outcome = Map(inward);
+  failures += ExpectGoodMap(outcome, inward->GetNumberOfPoints(), 1.05);
+  MOBIUS_EXPECT(mobius_test::FieldValue(outcome.Output, "ReversedTriangleOrientation") == 1);
+
+  // A triangle soup (each triangle with its own three points) is merged.
+  mobius::Points sphere;
+  mobius::Triangles triangles;
+  mobius::MakeIcosphere(2, sphere, triangles);
+  mobius::Points soupPoints(3 * triangles.rows(), 3);
+  mobius::Triangles soupTriangles(triangles.rows(), 3);
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      soupPoints.row(3 * t + k) = sphere.row(triangles(t, k));
+      soupTriangles(t, k) = 3 * t + k;
+    }
+  }
+  outcome = Map(ToPolyData(soupPoints, soupTriangles));
+  failures += ExpectGoodMap(outcome, sphere.rows(), 1.05);
+  MOBIUS_EXPECT(mobius_test::FieldValue(outcome.Output, "MergedDuplicatePoints") ==
+    soupPoints.rows() - sphere.rows());
+
+  // Quads are triangulated: a cube.
+  vtkNew<vtkPolyData> cube;
+  vtkNew<vtkPoints> cubePoints;
+  for (int i = 0; i < 8; ++i)
+  {
+    cubePoints->InsertNextPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  }
+  vtkNew<vtkCellArray> quads;
+  const vtkIdType faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  for (const auto& face : faces)
+  {
+    quads->InsertNextCell(4, face);
+  }
+  cube->SetPoints(cubePoints);
+  cube->SetPolys(quads);
+  outcome = Map(cube);
+  failures += ExpectGoodMap(outcome, 8, 2.0);
+  MOBIUS_EXPECT(outcome.Output->GetNumberOfPolys() == 12);
+
+  // Holes: an error that says how many, and FillHoles closes them.
+  mobius::Triangles open = triangles.topRows(triangles.rows() - 1);
+  auto withHole = ToPolyData(sphere, open);
+  failures += ExpectError(withHole, { "1 boundary loop", "FillHoles" });
+  outcome = Map(withHole, [](vtkSphericalConformalMap* map) { map->FillHolesOn(); });
+  failures += ExpectGoodMap(outcome, sphere.rows(), 1.2);
+  MOBIUS_EXPECT(mobius_test::FieldValue(outcome.Output, "FilledHoles") == 1);
+
+  // Two components: an error, and KeepLargestComponent keeps the bigger one.
+  mobius::Points small;
+  mobius::Triangles smallTriangles;
+  mobius::MakeIcosphere(1, small, smallTriangles);
+  mobius::Points both(sphere.rows() + small.rows(), 3);
+  both << sphere, (small.array() + 3.0).matrix();
+  mobius::Triangles bothTriangles(triangles.rows() + smallTriangles.rows(), 3);
+  bothTriangles << triangles, (smallTriangles.array() + sphere.rows()).matrix();
+  auto twoComponents = ToPolyData(both, bothTriangles);
+  failures += ExpectError(twoComponents, { "2 connected components", "KeepLargestComponent" });
+  outcome = Map(twoComponents, [](vtkSphericalConformalMap* map) { map->KeepLargestComponentOn(); });
+  failures += ExpectGoodMap(outcome, sphere.rows(), 1.05);
+  return failures;
+}
+
+int TestBadInputs()
+{
+  int failures = 0;
+  vtkNew<vtkPolyData> empty;
+  failures += ExpectError(empty, { "no points" });
+
+  vtkNew<vtkPolyData> pointsOnly;
+  pointsOnly->SetPoints(Ellipsoid(1, 1, 1, 1)->GetPoints());
+  failures += ExpectError(pointsOnly, { "no triangles" });
+
+  failures += ExpectError(Torus(24, 12), { "genus 1" });
+
+  auto withNaN = Ellipsoid(2, 1, 1, 1);
+  withNaN->GetPoints()->SetPoint(4, 0, std::nan(""), 0);
+  failures += ExpectError(withNaN, { "NaN" });
+
+  // Zero area: a vertex moved onto the midpoint of the opposite edge of one of its triangles.
+  auto flat = Ellipsoid(2, 1, 1, 1);
+  vtkIdType npts;
+  const vtkIdType* ids;
+  flat->GetCellPoints(0, npts, ids);
+  double b[3], c[3];
+  flat->GetPoint(ids[1], b);
+  flat->GetPoint(ids[2], c);
+  flat->GetPoints()->SetPoint(ids[0], (b[0] + c[0]) / 2, (b[1] + c[1]) / 2, (b[2] + c[2]) / 2);
+  failures += ExpectError(flat, { "zero-area" });
+
+  // A non-manifold edge: a third triangle on an edge of the sphere, to a new point.
+  auto fin = Ellipsoid(2, 1, 1, 1);
+  fin->GetCellPoints(0, npts, ids);
+  const vtkIdType extra = fin->GetPoints()->InsertNextPoint(3, 3, 3);
+  const vtkIdType finIds[3] = { ids[0], ids[1], extra };
+  fin->GetPolys()->InsertNextCell(3, finIds);
+  failures += ExpectError(fin, { "non-manifold edge" });
+  return failures;
+}
+
+int TestRealMesh()
+{
+  int failures = 0;
+#ifdef MOBIUS_MESH_DIR
+  // CGAL's hand (1,197 vertices, needle triangles down to 0.7 degrees) maps with no flips;
+  // CGAL's "eight" has genus 2.
+  vtkNew<vtkSurfaceMeshReader> reader;
+  reader->SetFileName(MOBIUS_MESH_DIR "/hand.off");
+  reader->Update();
+  const Outcome outcome = Map(reader->GetOutput());
+  failures += ExpectGoodMap(outcome, reader->GetOutput()->GetNumberOfPoints(), 1.3);
+  vtkNew<vtkSurfaceMeshReader> eight;
+  eight->SetFileName(MOBIUS_MESH_DIR "/eight.off");
+  eight->Update();
+  failures += ExpectError(eight->GetOutput(), { "genus 2" });
+#endif
+  return failures;
+}
+}
+
+int TestSphericalConformalMap(int, char*[])
+{
+  int failures = TestMaps();
+  failures += TestBadInputs();
+  failures += TestRealMesh();
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
