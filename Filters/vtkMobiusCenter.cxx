@@ -31,19 +31,8 @@ int vtkMobiusCenter::RequestData(
   mobius::Points points;
   mobius::Triangles triangles;
   mobius::Vector areas;
-  std::string error = mobius::vtk::ExtractPoints(input, points);
-  if (error.empty())
-  {
-    error = mobius::vtk::ExtractTriangles(input, triangles);
-  }
-  if (error.empty())
-  {
-    error = mobius::vtk::CheckOnUnitSphere(points);
-  }
-  if (error.empty() && triangles.rows() > 0)
-  {
-    error = mobius::vtk::ExtractSurfaceAreas(input, areas);
-  }
+  const std::string error =
+    mobius::vtk::ExtractSphericalMap(input, true, points, triangles, areas);
   if (!error.empty())
   {
     vtkErrorMacro(<< "Cannot center: " << error << ".");

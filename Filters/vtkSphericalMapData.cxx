@@ -116,6 +116,29 @@ std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas)
   return {};
 }
 
+std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& points,
+  Triangles& triangles, Vector& areas)
+{
+  std::string error = ExtractPoints(input, points);
+  if (error.empty())
+  {
+    error = ExtractTriangles(input, triangles);
+  }
+  if (error.empty() && triangles.rows() == 0 && !allowPointSet)
+  {
+    error = "the input has no triangles";
+  }
+  if (error.empty())
+  {
+    error = CheckOnUnitSphere(points);
+  }
+  if (error.empty() && triangles.rows() > 0)
+  {
+    error = ExtractSurfaceAreas(input, areas);
+  }
+  return error;
+}
+
 void SetPoints(vtkPolyData* output, const Points& points)
 {
   vtkNew<vtkPoints> vtkpoints;

@@ -43,6 +43,12 @@ std::string CheckOnUnitSphere(const Points& points);
 /// Reads cell data `SurfaceArea` for the triangles: present, one component, finite, > 0.
 std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas);
 
+/// All of the above for a spherical map: points (finite, on the unit sphere), triangles
+/// and their `SurfaceArea`. With `allowPointSet`, an input without polygons is accepted as
+/// a point set (no triangles, no areas); otherwise it is an error.
+std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& points,
+  Triangles& triangles, Vector& areas);
+
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);
 

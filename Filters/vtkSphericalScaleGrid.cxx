@@ -151,23 +151,7 @@ int vtkSphericalScaleGrid::RequestData(
   mobius::Points points;
   mobius::Triangles triangles;
   mobius::Vector areas;
-  std::string error = mobius::vtk::ExtractPoints(input, points);
-  if (error.empty())
-  {
-    error = mobius::vtk::ExtractTriangles(input, triangles);
-  }
-  if (error.empty() && triangles.rows() == 0)
-  {
-    error = "the input has no triangles";
-  }
-  if (error.empty())
-  {
-    error = mobius::vtk::CheckOnUnitSphere(points);
-  }
-  if (error.empty())
-  {
-    error = mobius::vtk::ExtractSurfaceAreas(input, areas);
-  }
+  std::string error = mobius::vtk::ExtractSphericalMap(input, false, points, triangles, areas);
   if (!error.empty())
   {
     vtkErrorMacro(<< "Cannot sample the scale factors: " << error << ".");

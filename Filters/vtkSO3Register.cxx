@@ -1,0 +1,174 @@
+#include "vtkSO3Register.h"
+
+#include "SO3Correlation.h"
+#include "ScaleFactorSignal.h"
+#include "vtkSphericalMapData.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+
+#include <array>
+
+vtkStandardNewMacro(vtkSO3Register);
+
+namespace
+{
+std::array<double, 9> RowMajor(const Eigen::Matrix3d& matrix)
+{
+  std::array<double, 9> values;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      values[3 * r + c] = matrix(r, c);
+    }
+  }
+  return values;
+}
+
+void AddTupleArray(vtkFieldData* fieldData, const char* name, int components,
+  const std::vector<std::vector<double>>& tuples)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  for (const auto& tuple : tuples)
+  {
+    array->InsertNextTuple(tuple.data());
+  }
+  fieldData->RemoveArray(name);
+  fieldData->AddArray(array);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSO3Register::vtkSO3Register()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkSO3Register::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  (void)port;
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkSO3Register::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* source = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* target = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!source || !target || !output)
+  {
+    vtkErrorMacro(<< "Both a Source (port 0) and a Target (port 1) spherical map are required.");
+    return 0;
+  }
+  if (this->Resolution < 4 || this->Resolution % 2 != 0)
+  {
+    vtkErrorMacro(<< "Resolution must be even and at least 4 (it is " << this->Resolution << ").");
+    return 0;
+  }
+
+  mobius::ScaleFactorSignalParameters parameters;
+  parameters.Resolution = this->Resolution;
+  parameters.SmoothingTime = this->SmoothingTime;
+  parameters.Value = this->ValueMode == 0 ? mobius::ScaleFactorValue::AreaRatio
+                                          : mobius::ScaleFactorValue::SquareRootAreaRatio;
+  mobius::Points sourcePoints;
+  mobius::ScaleFactorSignal signals[2];
+  vtkPolyData* inputs[2] = { source, target };
+  const char* names[2] = { "Source", "Target" };
+  for (int k = 0; k < 2; ++k)
+  {
+    mobius::Points points;
+    mobius::Triangles triangles;
+    mobius::Vector areas;
+    std::string error =
+      mobius::vtk::ExtractSphericalMap(inputs[k], false, points, triangles, areas);
+    auto progress = [this, k](double fraction) {
+      this->UpdateProgress(0.25 * (k + fraction));
+      return !this->GetAbortExecute();
+    };
+    if (error.empty() &&
+      !mobius::ComputeScaleFactorSignal(
+        points, triangles, areas, parameters, false, signals[k], error, progress))
+    {
+      if (this->GetAbortExecute())
+      {
+        return 0;
+      }
+    }
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "Cannot register: the " << names[k] << " (port " << k << "): " << error
+                    << ".");
+      return 0;
+    }
+    if (k == 0)
+    {
+      sourcePoints.swap(points);
+    }
+  }
+
+  mobius::SO3CorrelationOptions options;
+  options.NumberOfCandidates = this->NumberOfCandidates;
+  options.Reflections = static_cast<mobius::SO3ReflectionMode>(this->TransformMode);
+  const mobius::SO3CorrelationResult result =
+    mobius::CorrelateOverRotations(signals[0].Coefficients, signals[1].Coefficients, options);
+  this->UpdateProgress(0.95);
+  if (result.Candidates.empty() || !result.Transform.allFinite())
+  {
+    vtkErrorMacro(<< "Cannot register: the correlation found no peak (are both signals zero?).");
+    return 0;
+  }
+
+  output->ShallowCopy(source);
+  for (Eigen::Index i = 0; i < sourcePoints.rows(); ++i)
+  {
+    sourcePoints.row(i) = (result.Transform * sourcePoints.row(i).transpose()).transpose();
+  }
+  mobius::vtk::SetPoints(output, sourcePoints);
+
+  vtkFieldData* fieldData = output->GetFieldData();
+  const auto transform = RowMajor(result.Transform);
+  mobius::vtk::SetFieldValues(fieldData, "Rotation", transform.data(), 9);
+  mobius::vtk::SetFieldValue(fieldData, "Determinant", result.Determinant);
+  mobius::vtk::SetFieldValues(fieldData, "EulerAngles", result.EulerAngles.data(), 3);
+  mobius::vtk::SetFieldValue(fieldData, "CorrelationScore", result.Score);
+  mobius::vtk::SetFieldValue(fieldData, "RegistrationError", result.RegistrationError);
+  mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
+  mobius::vtk::SetFieldValue(fieldData, "CorrelationBandwidth", result.CorrelationBandwidth);
+  std::vector<std::vector<double>> transforms, scores, errors;
+  for (const auto& candidate : result.Candidates)
+  {
+    const auto values = RowMajor(candidate.Transform);
+    transforms.emplace_back(values.begin(), values.end());
+    scores.push_back({ candidate.Score });
+    errors.push_back({ candidate.RegistrationError });
+  }
+  AddTupleArray(fieldData, "CandidateTransforms", 9, transforms);
+  AddTupleArray(fieldData, "CandidateScores", 1, scores);
+  AddTupleArray(fieldData, "CandidateRegistrationErrors", 1, errors);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSO3Register::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
+  os << indent << "ValueMode: " << this->ValueMode << "\n";
+  os << indent << "TransformMode: " << this->TransformMode << "\n";
+  os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+}

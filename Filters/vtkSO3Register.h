@@ -1,0 +1,131 @@
+/**
+ * @class   vtkSO3Register
+ * @brief   The rotation (or reflection) that best aligns two centered spherical maps.
+ *
+ * Rotational alignment of Möbius Registration (Section 6.2). Both inputs are sampled as in
+ * vtkSphericalScaleGrid (exact area rasterization onto an N x N cell-centered grid, our own
+ * spherical harmonic transform, heat-kernel low pass), and the correlation
+ * C(T) = integral of f(T^-1 x) g(x) over the sphere of the source's signal f with the
+ * target's g is maximized over orthogonal transformations T: on a grid of Euler angles
+ * (an FFT over SO(3) of the coefficient products, through the factorization of Wigner's d
+ * by d(pi/2)), then refined below grid resolution by Newton's method on the band-limited
+ * C. The best few well-separated peaks are kept: near-symmetric shapes have several.
+ *
+ * Inputs: port 0 `Source` and port 1 `Target`, centered spherical maps (points on the unit
+ * sphere, triangles, cell array `SurfaceArea`), e.g. outputs of vtkMobiusCenter.
+ *
+ * Output: the source map with every point x moved to T x; connectivity and all arrays pass
+ * through. (With a reflection, det T = -1, the output's triangles face inward.) Field data:
+ * - `Rotation` (9 doubles, row-major 3x3 T, x' = T x; named for the common case, it is a
+ *   reflection when `Determinant` is -1);
+ * - `Determinant` (+1 or -1);
+ * - `EulerAngles` (3 doubles, ZYZ (alpha, beta, gamma) in radians of the rotation part R,
+ *   R = Rz(alpha) Ry(beta) Rz(gamma); T = R for rotations, T = -R for reflections);
+ * - `CorrelationScore` C(T) and `RegistrationError` (|f|^2 + |g|^2 - 2 C(T)) / (|f|^2 + |g|^2),
+ *   0 for a perfect match;
+ * - `CandidateTransforms` (K tuples of 9), `CandidateScores`, `CandidateRegistrationErrors`
+ *   (K tuples each), best first;
+ * - `Resolution`, `CorrelationBandwidth` (the bands used by the grid search).
+ *
+ * Errors: an input that is not a spherical map, missing or invalid `SurfaceArea`,
+ * Resolution odd or below 4.
+ *
+ * @sa vtkSphericalScaleGrid vtkDenseCorrespondence
+ */
+#ifndef vtkSO3Register_h
+#define vtkSO3Register_h
+
+#include "vtkMobiusRegistrationFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSO3Register : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSO3Register* New();
+  vtkTypeMacro(vtkSO3Register, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum TransformModes
+  {
+    ROTATIONS = 0,
+    REFLECTIONS = 1,
+    ROTATIONS_AND_REFLECTIONS = 2
+  };
+
+  ///@{
+  /**
+   * The target map (port 1); the source is the input of port 0.
+   */
+  void SetSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetTargetConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetSourceData(vtkDataObject* data) { this->SetInputData(0, data); }
+  void SetTargetData(vtkDataObject* data) { this->SetInputData(1, data); }
+  ///@}
+
+  ///@{
+  /**
+   * Grid size N of the scale-factor signals (even, >= 4); bandwidth N / 2. Default 256.
+   */
+  vtkSetMacro(Resolution, int);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Heat-kernel time of the low pass; 0 disables it. Default 5e-4.
+   */
+  vtkSetClampMacro(SmoothingTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SmoothingTime, double);
+  ///@}
+
+  ///@{
+  /**
+   * What the signals hold, as in vtkSphericalScaleGrid: 0 lambda, 1 sqrt(lambda)
+   * (default).
+   */
+  vtkSetClampMacro(ValueMode, int, 0, 1);
+  vtkGetMacro(ValueMode, int);
+  ///@}
+
+  ///@{
+  /**
+   * Which transformations to search: ROTATIONS (default), REFLECTIONS (det -1: mirror
+   * images, bilateral symmetry) or ROTATIONS_AND_REFLECTIONS (the better of the two).
+   */
+  vtkSetClampMacro(TransformMode, int, ROTATIONS, ROTATIONS_AND_REFLECTIONS);
+  vtkGetMacro(TransformMode, int);
+  void SetTransformModeToRotations() { this->SetTransformMode(ROTATIONS); }
+  void SetTransformModeToReflections() { this->SetTransformMode(REFLECTIONS); }
+  void SetTransformModeToRotationsAndReflections()
+  {
+    this->SetTransformMode(ROTATIONS_AND_REFLECTIONS);
+  }
+  ///@}
+
+  ///@{
+  /**
+   * How many well-separated correlation peaks to report (best first). Default 4.
+   */
+  vtkSetClampMacro(NumberOfCandidates, int, 1, 64);
+  vtkGetMacro(NumberOfCandidates, int);
+  ///@}
+
+protected:
+  vtkSO3Register();
+  ~vtkSO3Register() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Resolution = 256;
+  double SmoothingTime = 5e-4;
+  int ValueMode = 1;
+  int TransformMode = ROTATIONS;
+  int NumberOfCandidates = 4;
+
+private:
+  vtkSO3Register(const vtkSO3Register&) = delete;
+  void operator=(const vtkSO3Register&) = delete;
+};
+
+#endif

@@ -1,0 +1,172 @@
+// vtkSO3Register: recovers a known rotation and a known reflection between two copies of a
+// centered map; its matrix and Euler angles agree with applying them to points; clear
+// errors for bad inputs.
+#include "MobiusTestUtilities.h"
+#include "vtkMobiusCenter.h"
+#include "vtkSO3Register.h"
+
+#include "vtkExecutive.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <Eigen/Dense>
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> CenteredBumpyMap()
+{
+  auto map = mobius_test::MakeSphericalMap(4, mobius_test::BumpySurface, { 0.2, -0.1, 0.3 });
+  vtkNew<vtkMobiusCenter> center;
+  center->SetInputData(map);
+  center->Update();
+  return center->GetOutput();
+}
+
+// A copy of `map` with every point moved by `transform`; triangles reversed when it is a
+// reflection, so they still face outward.
+vtkSmartPointer<vtkPolyData> Transformed(vtkPolyData* map, const Eigen::Matrix3d& transform)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(map);
+  for (vtkIdType i = 0; i < copy->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    copy->GetPoint(i, p);
+    const Eigen::Vector3d q = transform * Eigen::Vector3d(p[0], p[1], p[2]);
+    copy->GetPoints()->SetPoint(i, q.data());
+  }
+  if (transform.determinant() < 0)
+  {
+    for (vtkIdType c = 0; c < copy->GetNumberOfCells(); ++c)
+    {
+      copy->ReverseCell(c);
+    }
+  }
+  return copy;
+}
+
+Eigen::Matrix3d FieldMatrix(vtkPolyData* data, const char* name)
+{
+  Eigen::Matrix3d m;
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  for (int k = 0; k < 9; ++k)
+  {
+    m(k / 3, k % 3) = array->GetComponent(0, k);
+  }
+  return m;
+}
+
+double AngleDegrees(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
+{
+  const double c = std::max(-1.0, std::min(1.0, ((a * b.transpose()).trace() - 1) / 2));
+  return std::acos(c) * 180 / vtkMath::Pi();
+}
+
+int TestRecovery()
+{
+  int failures = 0;
+  auto target = CenteredBumpyMap();
+  const Eigen::Matrix3d rotation =
+    Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  // The source is the target rotated by `rotation`: the registration must undo it.
+  auto source = Transformed(target, rotation);
+
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceData(source);
+  registration->SetTargetData(target);
+  registration->SetResolution(128);
+  registration->Update();
+  vtkPolyData* out = registration->GetOutput();
+  const Eigen::Matrix3d found = FieldMatrix(out, "Rotation");
+  const double error = AngleDegrees(found, rotation.transpose());
+  std::cout << "rotation error " << error << " degrees\n";
+  MOBIUS_EXPECT(error < 0.2);
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "Determinant") == 1);
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "RegistrationError") < 0.01);
+  MOBIUS_EXPECT(out->GetFieldData()->GetArray("CandidateTransforms")->GetNumberOfTuples() >= 1);
+
+  // Euler angles: R = Rz(alpha) Ry(beta) Rz(gamma).
+  vtkDataArray* euler = out->GetFieldData()->GetArray("EulerAngles");
+  const Eigen::Matrix3d fromEuler =
+    (Eigen::AngleAxisd(euler->GetComponent(0, 0), Eigen::Vector3d::UnitZ()) *
+      Eigen::AngleAxisd(euler->GetComponent(0, 1), Eigen::Vector3d::UnitY()) *
+      Eigen::AngleAxisd(euler->GetComponent(0, 2), Eigen::Vector3d::UnitZ()))
+      .toRotationMatrix();
+  MOBIUS_EXPECT((fromEuler - found).norm() < 1e-9);
+
+  // The output points are the source points moved by the matrix: back onto the target.
+  double pointError = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3], s[3];
+    out->GetPoint(i, p);
+    target->GetPoint(i, q);
+    source->GetPoint(i, s);
+    const Eigen::Vector3d moved = found * Eigen::Vector3d(s[0], s[1], s[2]);
+    MOBIUS_EXPECT((moved - Eigen::Vector3d(p[0], p[1], p[2])).norm() < 1e-12);
+    pointError = std::max(pointError, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+  }
+  MOBIUS_EXPECT(pointError < 0.2 * vtkMath::Pi() / 180 * 1.01);
+
+  // A mirror image is found with REFLECTIONS, and by ROTATIONS_AND_REFLECTIONS.
+  const Eigen::Matrix3d mirror = Eigen::Vector3d(-1, 1, 1).asDiagonal();
+  const Eigen::Matrix3d reflection = rotation * mirror;
+  auto mirrored = Transformed(target, reflection);
+  for (int mode : { vtkSO3Register::REFLECTIONS, vtkSO3Register::ROTATIONS_AND_REFLECTIONS })
+  {
+    registration->SetSourceData(mirrored);
+    registration->SetTransformMode(mode);
+    registration->Update();
+    out = registration->GetOutput();
+    MOBIUS_EXPECT(mobius_test::FieldValue(out, "Determinant") == -1);
+    const Eigen::Matrix3d foundReflection = FieldMatrix(out, "Rotation");
+    MOBIUS_EXPECT(std::abs(foundReflection.determinant() + 1) < 1e-9);
+    const double reflectionError = AngleDegrees(foundReflection, reflection.inverse());
+    std::cout << "reflection error " << reflectionError << " degrees\n";
+    MOBIUS_EXPECT(reflectionError < 0.2);
+  }
+  return failures;
+}
+
+int ExpectError(vtkPolyData* source, vtkPolyData* target, int resolution, const std::string& words)
+{
+  int failures = 0;
+  vtkNew<vtkSO3Register> registration;
+  mobius_test::MessageCatcher catcher(registration);
+  mobius_test::MessageCatcher executiveCatcher(registration->GetExecutive());
+  registration->SetSourceData(source);
+  registration->SetTargetData(target);
+  registration->SetResolution(resolution);
+  registration->Update();
+  if (catcher.Error.find(words) == std::string::npos)
+  {
+    std::cerr << "expected an error containing '" << words << "', got '" << catcher.Error << "'\n";
+    ++failures;
+  }
+  MOBIUS_EXPECT(registration->GetOutput()->GetNumberOfPoints() == 0);
+  return failures;
+}
+
+int TestBadInputs()
+{
+  int failures = 0;
+  auto map = CenteredBumpyMap();
+  failures += ExpectError(map, map, 31, "even and at least 4");
+  auto noArea = vtkSmartPointer<vtkPolyData>::New();
+  noArea->DeepCopy(map);
+  noArea->GetCellData()->RemoveArray("SurfaceArea");
+  failures += ExpectError(map, noArea, 16, "Target (port 1)");
+  failures += ExpectError(noArea, map, 16, "SurfaceArea");
+  auto offSphere = vtkSmartPointer<vtkPolyData>::New();
+  offSphere->DeepCopy(map);
+  offSphere->GetPoints()->SetPoint(0, 2, 0, 0);
+  failures += ExpectError(offSphere, map, 16, "not on the unit sphere");
+  return failures;
+}
+}
+
+int TestSO3Register(int, char*[])
+{
+  int failures = TestRecovery();
+  failures += TestBadInputs();
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
