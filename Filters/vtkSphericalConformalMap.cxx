@@ -213,7 +213,9 @@ int vtkSphericalConformalMap::RequestData(
   // unused points, orient consistently. FillHoles and KeepLargestComponent on request.
   Provenance provenance(points.rows(), triangles.rows());
   mobius::MeshTopologyReport report = mobius::AnalyzeMeshTopology(points, triangles);
-  const mobius::Index duplicates = report.DuplicatePoints;
+  // Only a mesh with open edges is a triangle soup to merge: a closed mesh may have two
+  // vertices at the same position (CGAL's cow does) and merging would pinch it.
+  const mobius::Index duplicates = report.BoundaryEdges > 0 ? report.DuplicatePoints : 0;
   if (duplicates > 0)
   {
     provenance.Apply(mobius::MergeDuplicatePoints(points, triangles));

@@ -48,7 +48,8 @@ struct GridPeak
 
 // Scans slices j = first .. last - 1 for local maxima over the 26 neighbours (α and γ wrap
 // around; below β = 0 and above β = π the grid continues as C(α, -β, γ) = C(α+π, β, γ+π)).
-// At β = 0 and π only γ = 0 is scanned: there C depends on α ± γ alone.
+// At β = 0 and π only γ = 0 is scanned: there C depends on α ± γ alone (and the duplicate
+// neighbours within the pole slice are skipped).
 void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int keep,
   std::vector<GridPeak>& peaks)
 {
@@ -104,6 +105,13 @@ void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int kee
         {
           for (int cc : { cm, c, cp })
           {
+            if (cCount == 1 && slice == here && cc != c)
+            {
+              // On a pole slice the rows c ± 1 repeat row c shifted by one sample (C depends
+              // on α ± γ only), so one neighbour there equals v up to round-off, which must
+              // not decide whether v is a maximum. Row c's own a ± 1 cover them.
+              continue;
+            }
             const double* row = slice + static_cast<std::size_t>(cc) * M;
             if (row[am] > v || row[a] > v || row[ap] > v)
             {
@@ -139,26 +147,34 @@ void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int kee
   peaks.insert(peaks.end(), heap.begin(), heap.end());
 }
 
-// Maximizes C from a grid point by Newton's method with the Hessian's eigenvalues forced
-// negative (a maximizer even where Euler angles degenerate) and steps capped at one grid
-// cell and halved until C does not decrease.
+// Newton step for maximizing a function with gradient g and Hessian H: the Hessian's
+// eigenvalues are forced negative, so the step is uphill even where H is indefinite or where
+// Euler angles degenerate (β = 0, π: one direction has no curvature and no gradient).
+Eigen::Vector3d MaximizingNewtonStep(const Eigen::Vector3d& gradient, const Eigen::Matrix3d& hessian)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(hessian);
+  Eigen::Vector3d lambda = eigen.eigenvalues();
+  const double scale = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
+  for (int i = 0; i < 3; ++i)
+  {
+    lambda[i] = std::min(lambda[i], -1e-8 * scale);
+  }
+  return -eigen.eigenvectors() * (eigen.eigenvectors().transpose() * gradient).cwiseQuotient(lambda);
+}
+
+// Maximizes C from a grid point by Newton's method on the tensor, steps capped at one grid
+// cell and halved until C does not decrease. A true peak converges from its grid point in 4-7
+// steps; grid maxima on ridges of C would crawl along them, so the iterations are capped.
+// Single-threaded (peaks run in parallel).
 double RefinePeak(const SO3CorrelationTensor& tensor, Eigen::Vector3d& euler)
 {
   const double maximumStep = M_PI / tensor.GetBandwidth();
   Eigen::Vector3d gradient;
   Eigen::Matrix3d hessian;
-  double value = tensor.Evaluate(euler, &gradient, &hessian);
-  for (int iteration = 0; iteration < 20; ++iteration)
+  double value = tensor.Evaluate(euler, &gradient, &hessian, 1);
+  for (int iteration = 0; iteration < 12; ++iteration)
   {
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(hessian);
-    Eigen::Vector3d lambda = eigen.eigenvalues();
-    const double scale = std::max(lambda.cwiseAbs().maxCoeff(), 1e-300);
-    for (int i = 0; i < 3; ++i)
-    {
-      lambda[i] = std::min(lambda[i], -1e-8 * scale);
-    }
-    Eigen::Vector3d step =
-      -eigen.eigenvectors() * (eigen.eigenvectors().transpose() * gradient).cwiseQuotient(lambda);
+    Eigen::Vector3d step = MaximizingNewtonStep(gradient, hessian);
     if (step.norm() < 1e-10)
     {
       break; // converged (quadratically): one more evaluation would not change anything
@@ -168,12 +184,12 @@ double RefinePeak(const SO3CorrelationTensor& tensor, Eigen::Vector3d& euler)
       step *= maximumStep / step.norm();
     }
     bool accepted = false;
-    for (int halving = 0; halving < 30 && !accepted; ++halving, step *= 0.5)
+    for (int halving = 0; halving < 20 && !accepted; ++halving, step *= 0.5)
     {
       Eigen::Vector3d trialGradient;
       Eigen::Matrix3d trialHessian;
       const Eigen::Vector3d trial = euler + step;
-      const double trialValue = tensor.Evaluate(trial, &trialGradient, &trialHessian);
+      const double trialValue = tensor.Evaluate(trial, &trialGradient, &trialHessian, 1);
       if (trialValue >= value - 1e-14 * std::abs(value))
       {
         accepted = true;
@@ -191,14 +207,97 @@ double RefinePeak(const SO3CorrelationTensor& tensor, Eigen::Vector3d& euler)
   return value;
 }
 
-// Best well-separated peaks of one determinant class.
-std::vector<SO3Candidate> FindCandidates(const SphericalHarmonicCoefficients& source,
+// A peak T = ±R(α,β,γ) · Q, with Q = I, or Q = Ry(π/2) when R itself would sit near the
+// singular β = 0, π of the Euler chart (see PolishPeaks).
+struct Peak
+{
+  Eigen::Vector3d Euler;
+  double Score;
+  bool Reflect;
+  bool QuarterTurnChart = false;
+};
+
+Eigen::Matrix3d PeakRotation(const Peak& peak)
+{
+  const Eigen::Matrix3d rotation = EulerZYZToMatrix(peak.Euler[0], peak.Euler[1], peak.Euler[2]);
+  return peak.QuarterTurnChart ? Eigen::Matrix3d(rotation * RotationAboutY(M_PI / 2)) : rotation;
+}
+
+Eigen::Matrix3d PeakTransform(const Peak& peak)
+{
+  const Eigen::Matrix3d rotation = PeakRotation(peak);
+  return peak.Reflect ? Eigen::Matrix3d(-rotation) : rotation;
+}
+
+// Coefficients of f∘Q⁻¹ for Q = Ry(π/2): D^l(0, π/2, 0) = Δ^l, so f'_lm = Σ_n Δ^l_mn f_ln.
+// Computed for m >= 0; f' is real, so f'_{l,-m} = (-1)^m conj(f'_lm).
+SphericalHarmonicCoefficients RotateQuarterTurnAboutY(
+  const SphericalHarmonicCoefficients& f, int bandwidth, int threads)
+{
+  SphericalHarmonicCoefficients rotated;
+  rotated.Resize(bandwidth);
+  ParallelFor(bandwidth, threads, [&](int task, int) {
+    const int l = bandwidth - 1 - task;
+    std::vector<double> quadrant(static_cast<std::size_t>(l + 1) * (l + 1));
+    ComputeWignerDeltaQuadrant(l, quadrant.data());
+    for (int m = 0; m <= l; ++m)
+    {
+      // Δ_{m,-n} = (-1)^(l+m) Δ_mn.
+      const double* row = quadrant.data() + static_cast<std::size_t>(m) * (l + 1);
+      const double sign = ((l + m) & 1) ? -1.0 : 1.0;
+      std::complex<double> sum = row[0] * f(l, 0);
+      for (int n = 1; n <= l; ++n)
+      {
+        sum += row[n] * (f(l, n) + sign * f(l, -n));
+      }
+      rotated(l, m) = sum;
+      if (m > 0)
+      {
+        rotated(l, -m) = ((m & 1) ? -1.0 : 1.0) * std::conj(sum);
+      }
+    }
+  });
+  return rotated;
+}
+
+// Keeps peaks (already sorted best first) that are at least `separation` away from every
+// better kept peak of the same determinant, up to `wanted` of them.
+std::vector<Peak> SelectSeparated(const std::vector<Peak>& peaks, double separation, int wanted)
+{
+  std::vector<Peak> kept;
+  for (const Peak& peak : peaks)
+  {
+    if (static_cast<int>(kept.size()) >= wanted)
+    {
+      break;
+    }
+    const Eigen::Matrix3d transform = PeakTransform(peak);
+    bool separated = true;
+    for (const Peak& other : kept)
+    {
+      if (other.Reflect == peak.Reflect &&
+        RotationAngleBetween(PeakTransform(other), transform) < separation)
+      {
+        separated = false;
+        break;
+      }
+    }
+    if (separated)
+    {
+      kept.push_back(peak);
+    }
+  }
+  return kept;
+}
+
+// Stage 1 for one determinant class: grid search at the coarse bandwidth, Newton on the
+// coarse tensor, and up to `wanted` well-separated peaks, best first.
+std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
   const SphericalHarmonicCoefficients& target, int bandwidth, bool reflect,
-  const SO3CorrelationOptions& options, int threads, double energySum)
+  const SO3CorrelationOptions& options, int threads, int wanted)
 {
   SO3CorrelationTensor tensor(source, target, bandwidth, reflect, threads);
   tensor.TransformToBetaSamples();
-  const int wanted = std::max(1, options.NumberOfCandidates);
   const int keep = 8 * wanted + 8;
   const int slices = bandwidth + 1;
   const int chunks = std::min(slices, threads);
@@ -208,59 +307,221 @@ std::vector<SO3Candidate> FindCandidates(const SphericalHarmonicCoefficients& so
     const int last = static_cast<int>(static_cast<long long>(slices) * (chunk + 1) / chunks);
     ScanSlices(tensor, first, last, keep, found[chunk]);
   });
-  std::vector<GridPeak> peaks;
+  std::vector<GridPeak> gridPeaks;
   for (const auto& f : found)
   {
-    peaks.insert(peaks.end(), f.begin(), f.end());
+    gridPeaks.insert(gridPeaks.end(), f.begin(), f.end());
   }
-  std::sort(peaks.begin(), peaks.end(),
-    [](const GridPeak& x, const GridPeak& y) { return x.Value > y.Value; });
+  // Ties broken by position so the order does not depend on how the slices were split.
+  std::sort(gridPeaks.begin(), gridPeaks.end(), [](const GridPeak& x, const GridPeak& y) {
+    if (x.Value != y.Value)
+    {
+      return x.Value > y.Value;
+    }
+    return std::lexicographical_compare(x.Euler.data(), x.Euler.data() + 3, y.Euler.data(),
+      y.Euler.data() + 3);
+  });
+  if (static_cast<int>(gridPeaks.size()) > keep)
+  {
+    gridPeaks.resize(keep); // the best `keep` of all slices, whatever the split
+  }
   if (options.RefinePeaks)
   {
     tensor.TransformToFourier();
   }
-  const double sign = reflect ? -1.0 : 1.0;
-  std::vector<SO3Candidate> accepted;
-  auto separated = [&](const Eigen::Matrix3d& rotation) {
-    for (const SO3Candidate& c : accepted)
+  const double separation = options.MinimumCandidateSeparation;
+  std::vector<Peak> accepted;
+  auto separatedFromAccepted = [&](const Peak& peak) {
+    const Eigen::Matrix3d transform = PeakTransform(peak);
+    for (const Peak& other : accepted)
     {
-      if (RotationAngleBetween(sign * c.Transform, rotation) < options.MinimumCandidateSeparation)
+      if (RotationAngleBetween(PeakTransform(other), transform) < separation)
       {
         return false;
       }
     }
     return true;
   };
-  for (const GridPeak& peak : peaks)
+  // Grid peaks are taken in order; one not separated from an accepted (refined) peak is
+  // skipped, as is a refined one that climbed near a better accepted peak. For parallelism a
+  // batch takes consecutive peaks, up to one per thread, as long as each is also separated from
+  // the batch's earlier members (otherwise the batch ends there and that peak is looked at
+  // again once they are refined).
+  std::size_t next = 0;
+  while (next < gridPeaks.size() && static_cast<int>(accepted.size()) < wanted)
   {
-    if (static_cast<int>(accepted.size()) >= wanted)
+    std::vector<Peak> batchPeaks;
+    while (next < gridPeaks.size() && static_cast<int>(batchPeaks.size()) < threads)
+    {
+      const Peak candidate{ gridPeaks[next].Euler, gridPeaks[next].Value, reflect };
+      if (!separatedFromAccepted(candidate))
+      {
+        ++next;
+        continue;
+      }
+      const Eigen::Matrix3d transform = PeakTransform(candidate);
+      bool separatedFromBatch = true;
+      for (const Peak& member : batchPeaks)
+      {
+        if (RotationAngleBetween(PeakTransform(member), transform) < separation)
+        {
+          separatedFromBatch = false;
+          break;
+        }
+      }
+      if (!separatedFromBatch)
+      {
+        break;
+      }
+      batchPeaks.push_back(candidate);
+      ++next;
+    }
+    if (options.RefinePeaks)
+    {
+      ParallelFor(static_cast<int>(batchPeaks.size()), threads,
+        [&](int i, int) { batchPeaks[i].Score = RefinePeak(tensor, batchPeaks[i].Euler); });
+    }
+    for (const Peak& peak : batchPeaks)
+    {
+      if (static_cast<int>(accepted.size()) < wanted && separatedFromAccepted(peak))
+      {
+        accepted.push_back(peak);
+      }
+    }
+  }
+  return accepted;
+}
+
+// Stage 2: Newton's method on the correlation over bands l < bandwidth for all peaks at once
+// (one EvaluateCorrelationSamples pass per iteration). A trial point that lowers C is
+// replaced by half the step; a peak is done when its Newton step is below 1e-6 rad (the step is
+// then applied without another pass: the position error left is of order |step|^2 times the
+// bandwidth, and the score is the quadratic model's value there).
+void PolishPeaks(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, int bandwidth, double maximumStep,
+  double separation, int threads, std::vector<Peak>& peaks)
+{
+  struct State
+  {
+    Eigen::Vector3d Base;  // last accepted point
+    double BaseValue = 0;
+    bool HasBase = false;
+    Eigen::Vector3d Step = Eigen::Vector3d::Zero();
+    int Halvings = 0;
+    bool Done = false;
+  };
+  const std::size_t count = peaks.size();
+  std::vector<State> states(count);
+  const int maximumPasses = 8;
+  // Near β = 0 or π the Euler chart is singular (only α ± γ is defined, and one direction of
+  // rotation is missing to first order), and Newton's method there stalls. Such peaks are
+  // refined as T = R · Ry(π/2) instead: C(R · Q) is the correlation of the rotated source
+  // f∘Q⁻¹ at R, and R's β is near π/2.
+  SphericalHarmonicCoefficients quarterTurnSource;
+  for (Peak& peak : peaks)
+  {
+    if (!peak.QuarterTurnChart && std::abs(std::sin(peak.Euler[1])) < 0.5)
+    {
+      const Eigen::Matrix3d rotation = PeakRotation(peak);
+      peak.Euler = MatrixToEulerZYZ(rotation * RotationAboutY(-M_PI / 2));
+      peak.QuarterTurnChart = true;
+      if (quarterTurnSource.Bandwidth == 0)
+      {
+        quarterTurnSource = RotateQuarterTurnAboutY(source, bandwidth, threads);
+      }
+    }
+  }
+  for (int pass = 0; pass < maximumPasses; ++pass)
+  {
+    std::vector<SO3CorrelationSample> samples;
+    std::vector<std::size_t> owner;
+    for (int chart = 0; chart < 2; ++chart)
+    {
+      std::vector<SO3CorrelationSample> group;
+      for (std::size_t i = 0; i < count; ++i)
+      {
+        if (!states[i].Done && peaks[i].QuarterTurnChart == (chart == 1))
+        {
+          SO3CorrelationSample sample;
+          sample.EulerAngles = states[i].HasBase
+            ? Eigen::Vector3d(states[i].Base + states[i].Step)
+            : peaks[i].Euler;
+          sample.ReflectSource = peaks[i].Reflect;
+          group.push_back(sample);
+          owner.push_back(i);
+        }
+      }
+      if (!group.empty())
+      {
+        EvaluateCorrelationSamples(
+          chart == 1 ? quarterTurnSource : source, target, group, bandwidth, threads);
+        samples.insert(samples.end(), group.begin(), group.end());
+      }
+    }
+    if (samples.empty())
     {
       break;
     }
-    Eigen::Vector3d euler = peak.Euler;
-    if (!separated(EulerZYZToMatrix(euler[0], euler[1], euler[2])))
+    for (std::size_t s = 0; s < samples.size(); ++s)
     {
-      continue;
+      State& state = states[owner[s]];
+      Peak& peak = peaks[owner[s]];
+      const SO3CorrelationSample& sample = samples[s];
+      if (state.HasBase && sample.Value < state.BaseValue - 1e-14 * std::abs(state.BaseValue))
+      {
+        // Uphill step went too far: halve it (the base stays the answer if it never works).
+        state.Step *= 0.5;
+        if (++state.Halvings > 40)
+        {
+          state.Done = true;
+        }
+        continue;
+      }
+      state.Base = sample.EulerAngles;
+      state.BaseValue = sample.Value;
+      state.HasBase = true;
+      state.Halvings = 0;
+      peak.Euler = state.Base;
+      peak.Score = state.BaseValue;
+      Eigen::Vector3d step = MaximizingNewtonStep(sample.Gradient, sample.Hessian);
+      if (step.norm() > maximumStep)
+      {
+        step *= maximumStep / step.norm();
+      }
+      if (step.norm() < 1e-6)
+      {
+        const double model =
+          sample.Value + sample.Gradient.dot(step) + 0.5 * step.dot(sample.Hessian * step);
+        if (model >= sample.Value)
+        {
+          peak.Euler = state.Base + step;
+          peak.Score = model;
+        }
+        state.Done = true;
+        continue;
+      }
+      state.Step = step;
     }
-    double score = peak.Value;
-    if (options.RefinePeaks)
+    // A peak that climbed within `separation` of a better one is the same peak (or would be
+    // dropped next to it): stop refining it.
+    for (std::size_t i = 0; i < count; ++i)
     {
-      score = RefinePeak(tensor, euler);
+      if (states[i].Done)
+      {
+        continue;
+      }
+      const Eigen::Matrix3d transform = PeakTransform(peaks[i]);
+      for (std::size_t j = 0; j < count; ++j)
+      {
+        if (j != i && peaks[j].Reflect == peaks[i].Reflect && peaks[j].Score > peaks[i].Score &&
+          RotationAngleBetween(PeakTransform(peaks[j]), transform) < separation)
+        {
+          states[i].Done = true;
+          break;
+        }
+      }
     }
-    const Eigen::Matrix3d rotation = EulerZYZToMatrix(euler[0], euler[1], euler[2]);
-    if (!separated(rotation))
-    {
-      continue; // climbed onto a peak we already have
-    }
-    SO3Candidate candidate;
-    candidate.Transform = sign * rotation;
-    candidate.Determinant = sign;
-    candidate.EulerAngles = MatrixToEulerZYZ(rotation);
-    candidate.Score = score;
-    candidate.RegistrationError = energySum > 0 ? (energySum - 2.0 * score) / energySum : 0.0;
-    accepted.push_back(candidate);
   }
-  return accepted;
 }
 }
 
@@ -297,6 +558,237 @@ int ChooseCorrelationBandwidth(const SphericalHarmonicCoefficients& source,
     ++smooth;
   }
   return IsSmooth(smooth) ? smooth : bandwidth;
+}
+
+int ChooseRefinementBandwidth(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, double tolerance)
+{
+  const int B = std::min(source.Bandwidth, target.Bandwidth);
+  if (!(tolerance > 0))
+  {
+    return B;
+  }
+  std::vector<double> product(B);
+  double total = 0;
+  for (int l = 0; l < B; ++l)
+  {
+    double f = 0;
+    double g = 0;
+    for (int m = -l; m <= l; ++m)
+    {
+      f += std::norm(source(l, m));
+      g += std::norm(target(l, m));
+    }
+    product[l] = std::sqrt(f * g);
+    total += product[l];
+  }
+  int bandwidth = B;
+  double tail = 0;
+  while (bandwidth > 1)
+  {
+    const double l = bandwidth - 1;
+    const double next = tail + (l + 1) * (l + 1) * product[bandwidth - 1];
+    if (next > tolerance * total)
+    {
+      break;
+    }
+    tail = next;
+    --bandwidth;
+  }
+  return std::max(bandwidth, std::min(B, 2));
+}
+
+// Per band l, with a_m = conj(g_lm) e^{-imα} i^m and b_n = ±f_ln e^{-inγ} i^{-n}
+// (d = i^(m-n) Σ_k Δ_km Δ_kn e^{-ikβ}):
+//   C = Σ_k u_k v_k e^{-ikβ},  u_k = Σ_m Δ_km a_m,  v_k = Σ_n Δ_kn b_n,  |k|, |m|, |n| <= l.
+// Real g gives a_{-m} = (-1)^m conj(a_m), and with Δ_{k,-m} = (-1)^(l+k) Δ_km, for k >= 0
+//   u_k = Σ_{m>=0, m ≡ l+k} Δ_km w_m Re a_m + i Σ_{m>=0, m ≢ l+k} Δ_km w_m Im a_m
+// (w_0 = 1, w_m = 2; mod 2), and u_{-k} = (-1)^k conj(u_k), likewise for v; so
+//   C = Re Σ_{k>=0} w_k u_k v_k e^{-ikβ}.
+// Splitting k and m by parity, each band is four real products of a Δ block (about l/2 square)
+// with 6 columns per sample (a, ∂α a, ∂α² a, b, ∂γ b, ∂γ² b); ∂β brings down -ik.
+void EvaluateCorrelationSamples(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, std::vector<SO3CorrelationSample>& samples,
+  int bandwidth, int numberOfThreads)
+{
+  int B = std::min(source.Bandwidth, target.Bandwidth);
+  if (bandwidth > 0)
+  {
+    B = std::min(B, bandwidth);
+  }
+  const int count = static_cast<int>(samples.size());
+  for (SO3CorrelationSample& sample : samples)
+  {
+    sample.Value = 0;
+    sample.Gradient.setZero();
+    sample.Hessian.setZero();
+  }
+  if (count == 0 || B <= 0)
+  {
+    return;
+  }
+  const int threads = std::min(ResolveThreadCount(numberOfThreads), B);
+  using Complex = std::complex<double>;
+  // Phase tables: e^{-imα} i^m, e^{-inγ} i^{-n}, e^{-ikβ} for 0 <= m, n, k < B.
+  const std::size_t table = static_cast<std::size_t>(count) * B;
+  std::vector<Complex> alphaPhase(table), gammaPhase(table), betaPhase(table);
+  for (int c = 0; c < count; ++c)
+  {
+    const Eigen::Vector3d& e = samples[c].EulerAngles;
+    static const Complex powersOfI[4] = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } };
+    for (int m = 0; m < B; ++m)
+    {
+      alphaPhase[c * B + m] = std::polar(1.0, -m * e[0]) * powersOfI[m & 3];
+      gammaPhase[c * B + m] = std::polar(1.0, -m * e[2]) * powersOfI[(4 - (m & 3)) & 3];
+      betaPhase[c * B + m] = std::polar(1.0, -m * e[1]);
+    }
+  }
+  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
+  using MatrixMap = Eigen::Map<Matrix>;
+  const int columns = 6 * count;
+  const std::size_t half = static_cast<std::size_t>(B + 1) / 2 + 1; // >= rows of any block
+  struct Scratch
+  {
+    std::vector<double> Work;
+    std::vector<double> Delta;  // four blocks E[kp][mp], column-major
+    std::vector<double> Right;  // per mp: real and imaginary right-hand sides
+    std::vector<double> Result; // per kp: P (real parts of u, v) and Q (imaginary parts)
+  };
+  std::vector<Scratch> scratch(threads);
+  for (Scratch& s : scratch)
+  {
+    s.Delta.resize(4 * half * half);
+    s.Right.resize(4 * half * columns);
+    s.Result.resize(4 * half * columns);
+  }
+  // 10 sums per sample and band: C, ∂α, ∂β, ∂γ, αα, αβ, αγ, ββ, βγ, γγ.
+  std::vector<double> perBand(static_cast<std::size_t>(B) * count * 10, 0.0);
+  ParallelFor(B, threads, [&](int task, int thread) {
+    const int l = B - 1 - task; // large bands first
+    Scratch& s = scratch[thread];
+    const int rows[2] = { l / 2 + 1, (l + 1) / 2 }; // even and odd indices in [0, l]
+    double* blocks[2][2];
+    for (int kp = 0; kp < 2; ++kp)
+    {
+      for (int mp = 0; mp < 2; ++mp)
+      {
+        blocks[kp][mp] = s.Delta.data() + (2 * kp + mp) * half * half;
+      }
+    }
+    VisitWignerDeltaColumns(l, s.Work, [&](int m, const double* column) {
+      const int mp = m & 1;
+      double* even = blocks[0][mp] + static_cast<std::size_t>(m >> 1) * rows[0];
+      double* odd = blocks[1][mp] + static_cast<std::size_t>(m >> 1) * rows[1];
+      for (int i = 0; i < rows[0]; ++i)
+      {
+        even[i] = column[2 * i];
+      }
+      for (int i = 0; i < rows[1]; ++i)
+      {
+        odd[i] = column[2 * i + 1];
+      }
+    });
+    // Right-hand sides: Right[mp][0] = w Re(.), Right[mp][1] = w Im(.), rows m = 2j + mp.
+    double* right[2][2];
+    double* result[2][2];
+    for (int p = 0; p < 2; ++p)
+    {
+      for (int part = 0; part < 2; ++part)
+      {
+        right[p][part] = s.Right.data() + (2 * p + part) * half * columns;
+        result[p][part] = s.Result.data() + (2 * p + part) * half * columns;
+      }
+    }
+    for (int c = 0; c < count; ++c)
+    {
+      const double sourceSign = (samples[c].ReflectSource && (l & 1)) ? -1.0 : 1.0;
+      for (int m = 0; m <= l; ++m)
+      {
+        const double w = m == 0 ? 1.0 : 2.0;
+        const Complex a = w * std::conj(target(l, m)) * alphaPhase[c * B + m];
+        const Complex b = (w * sourceSign) * source(l, m) * gammaPhase[c * B + m];
+        const Complex minusIm(0, -m);
+        const Complex values[6] = { a, minusIm * a, -double(m) * m * a, b, minusIm * b,
+          -double(m) * m * b };
+        const int mp = m & 1;
+        const std::size_t row = m >> 1;
+        for (int q = 0; q < 6; ++q)
+        {
+          const std::size_t index = static_cast<std::size_t>(6 * c + q) * rows[mp] + row;
+          right[mp][0][index] = values[q].real();
+          right[mp][1][index] = values[q].imag();
+        }
+      }
+    }
+    for (int kp = 0; kp < 2; ++kp)
+    {
+      if (rows[kp] == 0)
+      {
+        continue;
+      }
+      const int realParity = (l + kp) & 1; // m ≡ l + k contributes to the real part
+      for (int part = 0; part < 2; ++part)
+      {
+        const int mp = part == 0 ? realParity : 1 - realParity;
+        MatrixMap out(result[kp][part], rows[kp], columns);
+        if (rows[mp] == 0)
+        {
+          out.setZero();
+          continue;
+        }
+        const MatrixMap delta(blocks[kp][mp], rows[kp], rows[mp]);
+        const MatrixMap rhs(right[mp][part], rows[mp], columns);
+        out.noalias() = delta * rhs;
+      }
+    }
+    for (int c = 0; c < count; ++c)
+    {
+      double sum[10] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+      for (int k = 0; k <= l; ++k)
+      {
+        const int kp = k & 1;
+        const std::size_t i = k >> 1;
+        auto at = [&](int q) {
+          const std::size_t index = static_cast<std::size_t>(6 * c + q) * rows[kp] + i;
+          return Complex(result[kp][0][index], result[kp][1][index]);
+        };
+        const Complex u0 = at(0), u1 = at(1), u2 = at(2), v0 = at(3), v1 = at(4), v2 = at(5);
+        const Complex e = (k == 0 ? 1.0 : 2.0) * betaPhase[c * B + k];
+        const Complex t(0, -k); // ∂β
+        const Complex u0e = u0 * e;
+        const Complex u1e = u1 * e;
+        const Complex value = u0e * v0;
+        sum[0] += value.real();
+        sum[1] += (u1e * v0).real();
+        sum[2] += (t * value).real();
+        sum[3] += (u0e * v1).real();
+        sum[4] += (u2 * e * v0).real();
+        sum[5] += (t * u1e * v0).real();
+        sum[6] += (u1e * v1).real();
+        sum[7] += (t * t * value).real();
+        sum[8] += (t * u0e * v1).real();
+        sum[9] += (u0e * v2).real();
+      }
+      std::copy(sum, sum + 10, perBand.data() + (static_cast<std::size_t>(l) * count + c) * 10);
+    }
+  });
+  for (int c = 0; c < count; ++c)
+  {
+    double total[10] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+    for (int l = 0; l < B; ++l)
+    {
+      const double* band = perBand.data() + (static_cast<std::size_t>(l) * count + c) * 10;
+      for (int q = 0; q < 10; ++q)
+      {
+        total[q] += band[q];
+      }
+    }
+    SO3CorrelationSample& sample = samples[c];
+    sample.Value = total[0];
+    sample.Gradient = Eigen::Vector3d(total[1], total[2], total[3]);
+    sample.Hessian << total[4], total[5], total[6], total[5], total[7], total[8], total[6],
+      total[8], total[9];
+  }
 }
 
 double EvaluateCorrelationDirectly(const SphericalHarmonicCoefficients& source,
@@ -358,23 +850,48 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
     options.MinimumCorrelationBandwidth, options.MaximumCorrelationBandwidth);
   result.CorrelationBandwidth = bandwidth;
   result.GridResolution = 2 * bandwidth;
+  result.RefinementBandwidth = bandwidth;
   const double energySum = result.SourceEnergy + result.TargetEnergy;
+  const int wanted = std::max(1, options.NumberOfCandidates);
+  const int refinementBandwidth =
+    std::max(bandwidth, ChooseRefinementBandwidth(source, target, options.RefinementTolerance));
+  // Polished even when B'' = B': the polish also handles peaks at degenerate Euler angles.
+  const bool polish = options.RefinePeaks;
+  // Truncation can reorder peaks whose scores are close, so a couple more than wanted go
+  // through the refinement and are ranked by their refined scores.
+  const int carried = polish ? wanted + 2 : wanted;
   // The two determinant classes run one after the other so only one tensor is alive.
+  std::vector<Peak> peaks;
   if (options.Reflections != SO3ReflectionMode::ReflectionsOnly)
   {
-    auto found = FindCandidates(source, target, bandwidth, false, options, threads, energySum);
-    result.Candidates.insert(result.Candidates.end(), found.begin(), found.end());
+    auto found = SearchGrid(source, target, bandwidth, false, options, threads, carried);
+    peaks.insert(peaks.end(), found.begin(), found.end());
   }
   if (options.Reflections != SO3ReflectionMode::RotationsOnly)
   {
-    auto found = FindCandidates(source, target, bandwidth, true, options, threads, energySum);
-    result.Candidates.insert(result.Candidates.end(), found.begin(), found.end());
+    auto found = SearchGrid(source, target, bandwidth, true, options, threads, carried);
+    peaks.insert(peaks.end(), found.begin(), found.end());
   }
-  std::stable_sort(result.Candidates.begin(), result.Candidates.end(),
-    [](const SO3Candidate& x, const SO3Candidate& y) { return x.Score > y.Score; });
-  if (static_cast<int>(result.Candidates.size()) > std::max(1, options.NumberOfCandidates))
+  if (polish)
   {
-    result.Candidates.resize(std::max(1, options.NumberOfCandidates));
+    result.RefinementBandwidth = refinementBandwidth;
+    PolishPeaks(source, target, refinementBandwidth, M_PI / bandwidth,
+      options.MinimumCandidateSeparation, threads, peaks);
+  }
+  std::stable_sort(peaks.begin(), peaks.end(),
+    [](const Peak& x, const Peak& y) { return x.Score > y.Score; });
+  peaks = SelectSeparated(peaks, options.MinimumCandidateSeparation, wanted);
+  for (const Peak& peak : peaks)
+  {
+    SO3Candidate candidate;
+    const Eigen::Matrix3d rotation = PeakRotation(peak);
+    candidate.Determinant = peak.Reflect ? -1.0 : 1.0;
+    candidate.Transform = candidate.Determinant * rotation;
+    candidate.EulerAngles = MatrixToEulerZYZ(rotation);
+    candidate.Score = peak.Score;
+    candidate.RegistrationError =
+      energySum > 0 ? (energySum - 2.0 * peak.Score) / energySum : 0.0;
+    result.Candidates.push_back(candidate);
   }
   if (!result.Candidates.empty())
   {

@@ -4,13 +4,20 @@
 //     C(T) = ∫_{S²} f(T⁻¹ x) g(x) dx,
 // i.e. the transform that, applied to the source, best matches the target.
 //
-// Pipeline: choose a correlation bandwidth B' <= B from the spectra (bands whose product
-// energy is negligible are dropped; fine angles come from refinement, not from a huge grid);
-// build the Fourier tensor of C (SO3CorrelationTensor.h); synthesize C on the Euler grid
-// α, γ ∈ 2πa/(2B'), β ∈ πj/B' one β slice at a time (O(B'^2) memory per thread) and keep the
-// best local maxima; refine them by Newton's method on the exact band-limited C; return the
-// best well-separated candidates. Reflections: f(-x) has coefficients (-1)^l f_lm, so
-// T = R·(-I) (det -1) is found by correlating the antipodal source.
+// Pipeline (two bandwidths):
+// 1. Search. A coarse correlation bandwidth B' is chosen from the product spectrum with a loose
+//    tolerance (after heat smoothing, the high bands carry almost no energy and cannot move a
+//    peak by more than a fraction of a grid cell). The Fourier tensor of C at B'
+//    (SO3CorrelationTensor.h) is synthesized on the Euler grid α, γ ∈ 2πa/(2B'),
+//    β ∈ πj/B', one β slice at a time (O(B'^2) memory per thread), keeping the best local
+//    maxima, which Newton's method on the B' tensor moves off the grid.
+// 2. Refinement. The few best well-separated candidates are polished by Newton's method on the
+//    correlation summed over all bands l < B'' (EvaluateCorrelationSamples: value, gradient
+//    and Hessian from the Wigner Δ matrices, O(B''^3) per pass for all candidates at once).
+//    B'' drops only bands whose contribution to C and its first two derivatives is below
+//    RefinementTolerance (round-off by default), so the answer does not depend on B'.
+// Reflections: f(-x) has coefficients (-1)^l f_lm, so T = R·(-I) (det -1) is found by
+// correlating the antipodal source.
 #ifndef mobius_SO3Correlation_h
 #define mobius_SO3Correlation_h
 
@@ -36,15 +43,24 @@ struct SO3CorrelationOptions
   /// Minimum geodesic distance (radians) between returned candidates of the same determinant.
   double MinimumCandidateSeparation = 10.0 * 3.14159265358979323846 / 180.0;
   SO3ReflectionMode Reflections = SO3ReflectionMode::RotationsOnly;
-  /// Drop bands l >= B' when Σ_{l>=B'} |f_l||g_l| <= tolerance · Σ_l |f_l||g_l| (|f_l| the
-  /// norm of band l). By Cauchy-Schwarz this bounds the change of C anywhere. 0 keeps all.
-  double BandwidthTolerance = 1e-12;
+  /// Search grid: drop bands l >= B' when Σ_{l>=B'} |f_l||g_l| <= tolerance · Σ_l |f_l||g_l|
+  /// (|f_l| the norm of band l). By Cauchy-Schwarz this bounds the change of C anywhere. Only
+  /// the grid search and its first Newton steps use B'; the final peaks come from the
+  /// refinement below, so this trades search speed against the risk of missing a peak, not
+  /// accuracy. 0 keeps all bands.
+  double BandwidthTolerance = 1e-3;
   /// B' is at least min(this, B) so that the grid is fine enough to catch every peak...
-  int MinimumCorrelationBandwidth = 16;
+  int MinimumCorrelationBandwidth = 24;
   /// ...and at most this (0: no limit besides B).
   int MaximumCorrelationBandwidth = 0;
-  /// Newton refinement of the peaks below grid resolution.
+  /// Newton refinement of the peaks below grid resolution (first on the B' tensor, then on
+  /// the full-band correlation).
   bool RefinePeaks = true;
+  /// Refinement bandwidth B'': bands l >= B'' are left out of the refinement when
+  /// Σ_{l>=B''} (l+1)^2 |f_l||g_l| <= tolerance · Σ_l |f_l||g_l|, which bounds their effect on
+  /// C, its gradient and its Hessian (in Euler angles) alike. The default is at round-off;
+  /// 0 uses every band both inputs have.
+  double RefinementTolerance = 1e-15;
   /// 0: one thread per core.
   int NumberOfThreads = 0;
 };
@@ -56,7 +72,8 @@ struct SO3Candidate
   double Determinant = 1.0;
   /// ZYZ Euler angles (α, β, γ) of the rotation part: R = Rz(α) Ry(β) Rz(γ).
   Eigen::Vector3d EulerAngles = Eigen::Vector3d::Zero();
-  /// C(Transform) of the band-limited (B') correlation.
+  /// C(Transform) of the band-limited correlation (bands l < RefinementBandwidth; the grid
+  /// bandwidth B' if RefinePeaks is off).
   double Score = 0.0;
   /// (|f|² + |g|² - 2 C) / (|f|² + |g|²) = |f∘T⁻¹ - g|² / (|f|² + |g|²), in [0, 2].
   double RegistrationError = 0.0;
@@ -72,8 +89,9 @@ struct SO3CorrelationResult
   double RegistrationError = 0.0;
   /// Best first; rotations and reflections mixed in mode Both.
   std::vector<SO3Candidate> Candidates;
-  int CorrelationBandwidth = 0; // B'
+  int CorrelationBandwidth = 0; // B' of the search grid
   int GridResolution = 0;       // 2B' samples per 2π in α and γ; B'+1 in β over [0, π]
+  int RefinementBandwidth = 0;  // B'' >= B' of the refinement (B' if RefinePeaks is off)
   double SourceEnergy = 0.0;    // |f|² = Σ |f_lm|²
   double TargetEnergy = 0.0;
 };
@@ -88,6 +106,30 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
 int ChooseCorrelationBandwidth(const SphericalHarmonicCoefficients& source,
   const SphericalHarmonicCoefficients& target, double tolerance, int minimum = 16,
   int maximum = 0);
+
+/// B'' from the weighted tail bound described at SO3CorrelationOptions::RefinementTolerance
+/// (tolerance <= 0: all bands both inputs have).
+int ChooseRefinementBandwidth(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, double tolerance);
+
+/// One point of EvaluateCorrelationSamples: the input T = ±Rz(α)Ry(β)Rz(γ) and the outputs.
+struct SO3CorrelationSample
+{
+  Eigen::Vector3d EulerAngles = Eigen::Vector3d::Zero(); // (α, β, γ), any real values
+  bool ReflectSource = false;                           // T = -Rz(α)Ry(β)Rz(γ) (det -1)
+  double Value = 0.0;                                   // C(T)
+  Eigen::Vector3d Gradient = Eigen::Vector3d::Zero();   // ∂C/∂(α, β, γ)
+  Eigen::Matrix3d Hessian = Eigen::Matrix3d::Zero();    // ∂²C/∂(α, β, γ)²
+};
+
+/// C and its derivatives at every sample, summed over the bands l < bandwidth (0: all bands
+/// both inputs have) straight from the Wigner Δ matrices: per band, Δ^l is generated once and
+/// applied to all samples together (dense products on its four parity blocks), so a call costs
+/// about (6 · samples + 3) B^3 / 3 flops with O(B^2) memory per thread. Exact to round-off for
+/// any angles (no grid); the result does not depend on the thread count.
+void EvaluateCorrelationSamples(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, std::vector<SO3CorrelationSample>& samples,
+  int bandwidth = 0, int numberOfThreads = 0);
 
 /// C(T) summed directly from Wigner D matrices (O(B^3), long-double recursion); for checks.
 double EvaluateCorrelationDirectly(const SphericalHarmonicCoefficients& source,

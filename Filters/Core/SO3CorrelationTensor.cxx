@@ -354,8 +354,8 @@ void SO3CorrelationTensor::SynthesizeSlice(int j, SliceWorkspace& workspace, dou
   std::copy(buffers.Values, buffers.Values + static_cast<std::size_t>(M) * M, slice);
 }
 
-double SO3CorrelationTensor::Evaluate(
-  const Eigen::Vector3d& euler, Eigen::Vector3d* gradient, Eigen::Matrix3d* hessian) const
+double SO3CorrelationTensor::Evaluate(const Eigen::Vector3d& euler, Eigen::Vector3d* gradient,
+  Eigen::Matrix3d* hessian, int numberOfThreads) const
 {
   if (this->BetaSamples)
   {
@@ -379,11 +379,14 @@ double SO3CorrelationTensor::Evaluate(
   // C = Re Σ_{m>=0,k>=0} w_m e^{-imα} [c_k(β) E_km + s_k(β) O_km], w_0 = 1, w_m = 2,
   // c_0 = 1, c_k = 2cos(kβ), s_0 = 0, s_k = -2i sin(kβ); E (O) sums over n with m+n even (odd).
   // Derivatives: ∂α -> -im, ∂γ -> -in, ∂β acts on c_k, s_k.
-  const int threads = std::min(this->NumberOfThreads, B);
-  std::vector<std::array<double, 10>> partial(threads, std::array<double, 10>{});
-  const int chunks = std::min(B, 4 * threads);
-  ParallelFor(chunks, threads, [&](int chunk, int thread) {
-    std::array<double, 10>& sum = partial[thread];
+  const int threads =
+    std::min(numberOfThreads > 0 ? numberOfThreads : this->NumberOfThreads, B);
+  // A fixed number of chunks, each summed on its own and added up in order: the result is the
+  // same whichever thread ran which chunk.
+  const int chunks = std::min(B, 8);
+  std::vector<std::array<double, 10>> partial(chunks, std::array<double, 10>{});
+  ParallelFor(chunks, threads, [&](int chunk, int) {
+    std::array<double, 10>& sum = partial[chunk];
     for (int k = chunk; k < B; k += chunks)
     {
       const double ck = k == 0 ? 1.0 : 2.0 * std::cos(k * beta);

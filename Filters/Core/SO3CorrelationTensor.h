@@ -74,9 +74,10 @@ public:
   void SynthesizeSlice(int j, SliceWorkspace& workspace, double* slice) const;
 
   /// Requires Fourier form. C at Euler angles (α,β,γ) (any real values), and optionally its
-  /// gradient and Hessian with respect to (α,β,γ). O(B^3), multi-threaded.
+  /// gradient and Hessian with respect to (α,β,γ). O(B^3), on numberOfThreads threads (0: the
+  /// tensor's own count); the result does not depend on the thread count.
   double Evaluate(const Eigen::Vector3d& euler, Eigen::Vector3d* gradient = nullptr,
-    Eigen::Matrix3d* hessian = nullptr) const;
+    Eigen::Matrix3d* hessian = nullptr, int numberOfThreads = 0) const;
 
 private:
   std::complex<double>& At(int k, int m, int n)

@@ -18,37 +18,22 @@ inline double Sign(int parity)
 
 void ComputeWignerDeltaQuadrant(int l, double* quadrant)
 {
+  // The recursion yields columns (fixed m, all k); Δ_km = (-1)^(k-m) Δ_mk turns them into
+  // rows, so every write is contiguous: quadrant[m * (l+1) + k] = Δ_mk = (-1)^(k+m) Δ_km.
   const int size = l + 1;
-  // Edge column: Δ_{k,l} = 2^-l sqrt(binomial(2l, l+k)), all positive. Start from
-  // Δ_{0,l}^2 = Π_{i=1..l} (2i-1)/(2i) (= binomial(2l,l)/4^l, no overflow) and step in k.
-  double edge = 1.0;
-  for (int i = 1; i <= l; ++i)
-  {
-    edge *= (2.0 * i - 1.0) / (2.0 * i);
-  }
-  edge = std::sqrt(edge);
-  for (int k = 0; k <= l; ++k)
-  {
-    double* row = quadrant + static_cast<std::size_t>(k) * size;
-    row[l] = edge;
-    // 2k Δ_{k,m} = -[sqrt((l+m)(l-m+1)) Δ_{k,m-1} + sqrt((l-m)(l+m+1)) Δ_{k,m+1}]
-    // (sign checked against Wigner's formula), solved for Δ_{k,m-1} going down in m.
-    double above = 0.0; // Δ_{k,m+1}
-    double current = edge;
-    for (int m = l; m >= 1; --m)
+  std::vector<double> workspace;
+  VisitWignerDeltaColumns(l, workspace, [&](int m, const double* column) {
+    double* row = quadrant + static_cast<std::size_t>(m) * size;
+    const double sign = Sign(m);
+    for (int k = 0; k < size; k += 2)
     {
-      const double below =
-        -(2.0 * k * current + std::sqrt(double(l - m) * (l + m + 1)) * above) /
-        std::sqrt(double(l + m) * (l - m + 1));
-      row[m - 1] = below;
-      above = current;
-      current = below;
+      row[k] = sign * column[k];
     }
-    if (k < l)
+    for (int k = 1; k < size; k += 2)
     {
-      edge *= std::sqrt(double(l - k) / double(l + k + 1));
+      row[k] = -sign * column[k];
     }
-  }
+  });
 }
 
 double WignerDeltaFromQuadrant(const double* quadrant, int l, int k, int m)

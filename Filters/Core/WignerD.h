@@ -17,13 +17,64 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+#include <utility>
+#include <vector>
+
 namespace mobius
 {
-/// Δ^l_km = d^l_km(π/2) for 0 <= k, m <= l, written row-major into `quadrant`
-/// ((l+1) x (l+1), quadrant[k * (l+1) + m]). Computed by the three-term recursion in m at
-/// β = π/2, run from the edge m = l (closed form) down to m = 0, the direction in which the
-/// wanted solution grows, so the recursion is stable; negative indices follow by symmetry.
+/// Generates the columns of the Δ^l quadrant, m = l, l-1, ..., 0 in that order, and calls
+/// visit(m, column) with column[k] = Δ^l_km for 0 <= k <= l (valid only during the call).
+/// The three-term recursion in m at β = π/2,
+///     2k Δ_{k,m} = -[sqrt((l+m)(l-m+1)) Δ_{k,m-1} + sqrt((l-m)(l+m+1)) Δ_{k,m+1}],
+/// is run from the closed-form edge Δ_{k,l} = 2^-l sqrt(binomial(2l, l+k)) down to m = 0, the
+/// direction in which the wanted solution grows, so it is stable. All k advance together
+/// (the inner loop is over k and vectorizes); the square roots depend on (l, m) only and are
+/// taken once per column. `workspace` is resized as needed and may be reused across calls.
 /// Valid for l up to about 1000 (the edge value 2^-l must not underflow).
+template <typename Visit>
+void VisitWignerDeltaColumns(int l, std::vector<double>& workspace, Visit&& visit)
+{
+  const int size = l + 1;
+  workspace.resize(3 * static_cast<std::size_t>(size));
+  double* current = workspace.data();
+  double* above = current + size; // Δ_{k,m+1}, then reused for Δ_{k,m-1}
+  double* twiceK = above + size;
+  // Edge column: Δ_{0,l}^2 = Π_{i=1..l} (2i-1)/(2i) (= binomial(2l,l)/4^l, no overflow), then
+  // Δ_{k+1,l} = Δ_{k,l} sqrt((l-k)/(l+k+1)).
+  double edge = 1.0;
+  for (int i = 1; i <= l; ++i)
+  {
+    edge *= (2.0 * i - 1.0) / (2.0 * i);
+  }
+  edge = std::sqrt(edge);
+  for (int k = 0; k <= l; ++k)
+  {
+    current[k] = edge;
+    above[k] = 0.0;
+    twiceK[k] = 2.0 * k;
+    if (k < l)
+    {
+      edge *= std::sqrt(double(l - k) / double(l + k + 1));
+    }
+  }
+  visit(l, static_cast<const double*>(current));
+  for (int m = l; m >= 1; --m)
+  {
+    const double inverse = 1.0 / std::sqrt(double(l + m) * (l - m + 1));
+    const double ratio = std::sqrt(double(l - m) * (l + m + 1)) * inverse;
+    for (int k = 0; k <= l; ++k)
+    {
+      above[k] = -(twiceK[k] * inverse * current[k] + ratio * above[k]);
+    }
+    std::swap(current, above);
+    visit(m - 1, static_cast<const double*>(current));
+  }
+}
+
+/// Δ^l_km = d^l_km(π/2) for 0 <= k, m <= l, written row-major into `quadrant`
+/// ((l+1) x (l+1), quadrant[k * (l+1) + m]), by VisitWignerDeltaColumns; negative indices
+/// follow by symmetry (WignerDeltaFromQuadrant).
 void ComputeWignerDeltaQuadrant(int l, double* quadrant);
 
 /// Δ^l_km for any -l <= k, m <= l from a quadrant filled by ComputeWignerDeltaQuadrant.

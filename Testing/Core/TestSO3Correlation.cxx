@@ -189,6 +189,39 @@ void TestGridAgainstDirectSum()
           std::max(worstDerivative, ((gp - gm) / (2 * h) - hessian.col(i)).cwiseAbs().maxCoeff());
       }
     }
+    // The full-band sample evaluation (refinement) against the tensor, several points at once.
+    std::vector<mobius::SO3CorrelationSample> samples(7);
+    for (mobius::SO3CorrelationSample& sample : samples)
+    {
+      sample.EulerAngles = Eigen::Vector3d(Uniform(-1, 7), Uniform(-0.5, 3.6), Uniform(-1, 7));
+      sample.ReflectSource = reflect;
+    }
+    samples[0].EulerAngles[1] = 0.0; // degenerate Euler angles are fine too
+    samples[1].EulerAngles[1] = M_PI;
+    mobius::EvaluateCorrelationSamples(f, g, samples, 0, 2);
+    double worstSamples = 0;
+    for (const mobius::SO3CorrelationSample& sample : samples)
+    {
+      Eigen::Vector3d gradient;
+      Eigen::Matrix3d hessian;
+      const double value = tensor.Evaluate(sample.EulerAngles, &gradient, &hessian);
+      worstSamples = std::max({ worstSamples, std::abs(sample.Value - value),
+        (sample.Gradient - gradient).cwiseAbs().maxCoeff(),
+        (sample.Hessian - hessian).cwiseAbs().maxCoeff() });
+    }
+    // Thread count must not change the result.
+    std::vector<mobius::SO3CorrelationSample> single = samples;
+    mobius::EvaluateCorrelationSamples(f, g, single, 0, 1);
+    bool identical = true;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      identical = identical && single[i].Value == samples[i].Value &&
+        single[i].Gradient == samples[i].Gradient && single[i].Hessian == samples[i].Hessian;
+    }
+    MOBIUS_CHECK(identical);
+    MOBIUS_CHECK(worstSamples < 1e-11 * norms);
+    std::cout << (reflect ? "reflected" : "rotations") << ": samples (value, gradient, Hessian) vs tensor "
+              << worstSamples / norms << std::endl;
     std::cout << (reflect ? "reflected" : "rotations") << ": grid vs direct " << worstGrid / norms
               << ", series vs direct " << worstSeries / norms << ", derivatives vs differences "
               << worstDerivative / norms << " (relative to |f|^2+|g|^2)" << std::endl;

@@ -1,0 +1,232 @@
+#include "CommandLine.h"
+
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+bool ParseNumber(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end && *end == '\0';
+}
+
+bool ParseInteger(const std::string& text, int& value)
+{
+  double number;
+  if (!ParseNumber(text, number) || number != static_cast<int>(number))
+  {
+    return false;
+  }
+  value = static_cast<int>(number);
+  return true;
+}
+}
+
+std::string UsageText()
+{
+  const PipelineOptions defaults;
+  std::ostringstream text;
+  text << "usage: mobius-register [options] SOURCE TARGET -o OUT\n"
+          "       mobius-register [options]            (demo on CGAL's cow and a deformed copy)\n"
+          "\n"
+          "Dense correspondence between two closed genus-0 surface meshes by Moebius\n"
+          "registration (Baden, Crane & Kazhdan, SGP 2018): conformal map of each mesh onto the\n"
+          "sphere, canonical centering, rotational alignment by correlation over SO(3), and a\n"
+          "point-to-point map. Meshes: .obj .off .ply .stl .vtp .vtk\n"
+          "\n"
+          "Outputs (existing files are kept unless --force):\n"
+          "  -o, --output OUT       OUT.vtp: the source mesh mapped onto the target, with point\n"
+          "                         arrays TargetCellId, TargetBarycentric, MappedPoints and the\n"
+          "                         target's point arrays; OUT.csv: per source vertex, the target\n"
+          "                         triangle, its vertices and the barycentric coordinates.\n"
+          "                         The demo writes mobius-demo/demo.{vtp,csv,png} by default.\n"
+          "  --png FILE             picture: source colored by position, target by the colors\n"
+          "                         mapped back from the source (needs X; use xvfb-run)\n"
+          "\n"
+          "Conformal map:\n"
+          "  --iterations N         maximum flow steps (default "
+       << defaults.FlowIterations
+       << ")\n"
+          "  --tolerance T          flow convergence tolerance (default "
+       << defaults.FlowTolerance
+       << ")\n"
+          "  --center-flow          Moebius-center between flow steps\n"
+          "  --fill-holes           close holes instead of rejecting open meshes\n"
+          "  --keep-largest-component  map only the largest connected component\n"
+          "Registration:\n"
+          "  --resolution N         scale-factor grid size, even (default "
+       << defaults.Resolution
+       << ")\n"
+          "  --smoothing T          heat-kernel smoothing time (default "
+       << defaults.SmoothingTime
+       << ")\n"
+          "  --transform MODE       rotation | reflection | both (default rotation)\n"
+          "  --candidates K         correlation peaks to report (default "
+       << defaults.NumberOfCandidates
+       << ")\n"
+          "Correspondence:\n"
+          "  --output-geometry G    target | source: where OUT.vtp's points are (default target)\n"
+          "Other:\n"
+          "  --force                overwrite existing output files\n"
+          "  --quiet                no progress or warnings\n"
+          "  --json                 print a machine-readable summary on standard output\n"
+          "  --version, -h/--help\n"
+          "\n"
+          "Exit status: 0 on success, 1 if a mesh cannot be read or mapped, 2 for usage errors.\n";
+  return text.str();
+}
+
+bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error)
+{
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string option = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc)
+      {
+        error = option + " needs a value";
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string text;
+    if (option == "-h" || option == "--help")
+    {
+      commandLine.Help = true;
+    }
+    else if (option == "--version")
+    {
+      commandLine.Version = true;
+    }
+    else if (option == "--force")
+    {
+      commandLine.Force = true;
+    }
+    else if (option == "--quiet")
+    {
+      commandLine.Quiet = true;
+    }
+    else if (option == "--json")
+    {
+      commandLine.Json = true;
+    }
+    else if (option == "--center-flow")
+    {
+      commandLine.Pipeline.CenterBetweenSteps = true;
+    }
+    else if (option == "--fill-holes")
+    {
+      commandLine.Pipeline.FillHoles = true;
+    }
+    else if (option == "--keep-largest-component")
+    {
+      commandLine.Pipeline.KeepLargestComponent = true;
+    }
+    else if (option == "-o" || option == "--output")
+    {
+      if (!value(commandLine.Output))
+      {
+        return false;
+      }
+    }
+    else if (option == "--png")
+    {
+      if (!value(commandLine.Picture))
+      {
+        return false;
+      }
+    }
+    else if (option == "--iterations" || option == "--resolution" || option == "--candidates")
+    {
+      int number = 0;
+      if (!value(text) || !ParseInteger(text, number) || number < 1)
+      {
+        error = error.empty() ? option + " needs a positive integer, not '" + text + "'" : error;
+        return false;
+      }
+      if (option == "--resolution" && (number < 4 || number % 2 != 0))
+      {
+        error = "--resolution must be even and at least 4, not " + text;
+        return false;
+      }
+      (option == "--iterations"       ? commandLine.Pipeline.FlowIterations
+          : option == "--resolution" ? commandLine.Pipeline.Resolution
+                                     : commandLine.Pipeline.NumberOfCandidates) = number;
+    }
+    else if (option == "--tolerance" || option == "--smoothing")
+    {
+      double number = 0;
+      if (!value(text) || !ParseNumber(text, number) || number < 0)
+      {
+        error = error.empty() ? option + " needs a non-negative number, not '" + text + "'" : error;
+        return false;
+      }
+      (option == "--tolerance" ? commandLine.Pipeline.FlowTolerance
+                               : commandLine.Pipeline.SmoothingTime) = number;
+    }
+    else if (option == "--transform")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      const std::vector<std::string> modes = { "rotation", "reflection", "both" };
+      int mode = -1;
+      for (size_t m = 0; m < modes.size(); ++m)
+      {
+        mode = text == modes[m] ? static_cast<int>(m) : mode;
+      }
+      if (mode < 0)
+      {
+        error = "--transform must be rotation, reflection or both, not '" + text + "'";
+        return false;
+      }
+      commandLine.Pipeline.TransformMode = mode;
+    }
+    else if (option == "--output-geometry")
+    {
+      if (!value(text) || (text != "target" && text != "source"))
+      {
+        error = error.empty() ? "--output-geometry must be target or source, not '" + text + "'" : error;
+        return false;
+      }
+      commandLine.Pipeline.OutputGeometry = text == "target" ? 0 : 1;
+    }
+    else if (option.size() > 1 && option[0] == '-')
+    {
+      error = "unknown option " + option + " (see --help)";
+      return false;
+    }
+    else
+    {
+      positional.push_back(option);
+    }
+  }
+  if (commandLine.Help || commandLine.Version)
+  {
+    return true;
+  }
+  if (positional.empty())
+  {
+    commandLine.Demo = true;
+    return true;
+  }
+  if (positional.size() != 2)
+  {
+    error = "expected two meshes, SOURCE and TARGET (see --help)";
+    return false;
+  }
+  commandLine.Source = positional[0];
+  commandLine.Target = positional[1];
+  if (commandLine.Output.empty())
+  {
+    error = "no output given: add -o OUT";
+    return false;
+  }
+  return true;
+}

@@ -1,0 +1,30 @@
+// Options of mobius-register and their parsing.
+#ifndef CommandLine_h
+#define CommandLine_h
+
+#include "RegistrationPipeline.h"
+
+#include <string>
+
+struct CommandLine
+{
+  std::string Source, Target;
+  std::string Output;   // path prefix or .vtp file; outputs are <stem>.vtp and <stem>.csv
+  std::string Picture;  // --png
+  bool Demo = false;    // no input meshes given
+  bool Force = false;
+  bool Quiet = false;
+  bool Json = false;
+  bool Help = false;
+  bool Version = false;
+  PipelineOptions Pipeline;
+};
+
+/// Parses argv. Returns false with `error` for unknown options, missing values or values
+/// out of range.
+bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error);
+
+/// The --help text, with the defaults.
+std::string UsageText();
+
+#endif

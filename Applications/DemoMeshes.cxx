@@ -1,0 +1,68 @@
+#include "DemoMeshes.h"
+
+#include "vtkSurfaceMeshReader.h"
+
+#include "vtkDataArray.h"
+#include "vtkMassProperties.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTransform.h"
+#include "vtkTriangleFilter.h"
+
+#include <cmath>
+#include <fstream>
+
+bool MakeDemoMeshes(DemoMeshes& demo, std::string& error)
+{
+  demo.SourcePath = std::string(MOBIUS_MESH_DIR) + "/cow.off";
+  if (!std::ifstream(demo.SourcePath))
+  {
+    error = demo.SourcePath +
+      ": the demo mesh is missing (install libcgal-demo and re-run cmake, or run scripts/setup.sh)";
+    return false;
+  }
+  vtkNew<vtkSurfaceMeshReader> reader;
+  reader->SetFileName(demo.SourcePath.c_str());
+  reader->Update();
+  demo.Source = reader->GetOutput();
+
+  // The cow's body runs along x (length about 1), y is up, z across.
+  demo.Target = vtkSmartPointer<vtkPolyData>::New();
+  demo.Target->DeepCopy(demo.Source);
+  vtkNew<vtkTransform> rotation;
+  rotation->RotateWXYZ(120.0, 0.6, 0.48, 0.64);
+  vtkPoints* points = demo.Target->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    // A gentle bend of the back, slightly longer legs, a wider body.
+    const double bent[3] = { p[0], p[1] + 0.08 * std::sin(3.0 * p[0]) + (p[1] < 0 ? 0.15 * p[1] : 0.0),
+      1.15 * p[2] };
+    points->SetPoint(i, rotation->TransformPoint(bent));
+  }
+  return true;
+}
+
+double DemoMeanError(vtkPolyData* correspondence, vtkPolyData* target)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(target);
+  vtkNew<vtkMassProperties> mass;
+  mass->SetInputConnection(triangles->GetOutputPort());
+  mass->Update();
+  const double scale = std::sqrt(mass->GetSurfaceArea());
+  vtkDataArray* mapped = correspondence->GetPointData()->GetArray("MappedPoints");
+  double sum = 0;
+  const vtkIdType n = correspondence->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double a[3], b[3];
+    mapped->GetTuple(i, a);
+    target->GetPoint(i, b);
+    sum += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+  }
+  return n > 0 ? sum / n / scale : 0.0;
+}

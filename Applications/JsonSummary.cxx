@@ -1,0 +1,115 @@
+#include "JsonSummary.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace
+{
+std::string Quoted(const std::string& text)
+{
+  std::string out = "\"";
+  for (char c : text)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+      out += c;
+    }
+    else if (static_cast<unsigned char>(c) < 0x20)
+    {
+      char escaped[8];
+      std::snprintf(escaped, sizeof(escaped), "\\u%04x", c);
+      out += escaped;
+    }
+    else
+    {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// JSON has no NaN: absent figures are null.
+std::string Number(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "null";
+  }
+  std::ostringstream text;
+  text.precision(17);
+  text << value;
+  return text.str();
+}
+
+std::string Array(vtkPolyData* data, const char* name, int components)
+{
+  std::string out = "[";
+  for (int k = 0; k < components; ++k)
+  {
+    out += (k ? ", " : "") + Number(FieldValue(data, name, k));
+  }
+  return out + "]";
+}
+
+std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
+{
+  std::ostringstream out;
+  out << "{\"points\": " << map->GetNumberOfPoints()
+      << ", \"flow_iterations\": " << Number(FieldValue(map, "ConformalFlowIterations"))
+      << ", \"flow_converged\": " << (FieldValue(map, "ConformalFlowConverged") == 1 ? "true" : "false")
+      << ", \"flipped_triangles\": " << Number(FieldValue(map, "FlippedTriangles"))
+      << ", \"mean_quasi_conformal_distortion\": " << Number(FieldValue(map, "MeanQuasiConformalDistortion"))
+      << ", \"max_quasi_conformal_distortion\": " << Number(FieldValue(map, "MaxQuasiConformalDistortion"))
+      << ", \"centering_iterations\": " << Number(FieldValue(centered, "CenteringIterations"))
+      << ", \"center_of_mass_norm\": " << Number(FieldValue(centered, "CenterOfMassNorm")) << "}";
+  return out.str();
+}
+}
+
+std::string JsonSummary(const std::string& source, const std::string& target,
+  const PipelineResult& result, const OutputFiles& outputs, double demoError)
+{
+  std::ostringstream json;
+  json << "{\n  \"source\": " << Quoted(source) << ",\n  \"target\": " << Quoted(target)
+       << ",\n  \"rotation\": " << Array(result.Aligned, "Rotation", 9)
+       << ",\n  \"determinant\": " << Number(FieldValue(result.Aligned, "Determinant"))
+       << ",\n  \"euler_angles_zyz\": " << Array(result.Aligned, "EulerAngles", 3)
+       << ",\n  \"correlation_score\": " << Number(FieldValue(result.Aligned, "CorrelationScore"))
+       << ",\n  \"registration_error\": " << Number(FieldValue(result.Aligned, "RegistrationError"))
+       << ",\n  \"candidates\": [";
+  vtkDataArray* transforms = result.Aligned->GetFieldData()->GetArray("CandidateTransforms");
+  vtkDataArray* scores = result.Aligned->GetFieldData()->GetArray("CandidateScores");
+  for (vtkIdType c = 0; transforms && scores && c < transforms->GetNumberOfTuples(); ++c)
+  {
+    json << (c ? ", " : "") << "{\"score\": " << Number(scores->GetComponent(c, 0))
+         << ", \"transform\": [";
+    for (int k = 0; k < 9; ++k)
+    {
+      json << (k ? ", " : "") << Number(transforms->GetComponent(c, k));
+    }
+    json << "]}";
+  }
+  json << "],\n  \"source_map\": " << MapQuality(result.SourceMap, result.SourceCentered)
+       << ",\n  \"target_map\": " << MapQuality(result.TargetMap, result.TargetCentered)
+       << ",\n  \"clamped_points\": " << Number(FieldValue(result.Correspondence, "ClampedPoints"))
+       << ",\n  \"stages\": [";
+  double total = 0;
+  for (size_t s = 0; s < result.Stages.size(); ++s)
+  {
+    json << (s ? ", " : "") << "{\"name\": " << Quoted(result.Stages[s].Name)
+         << ", \"seconds\": " << Number(result.Stages[s].Seconds) << "}";
+    total += result.Stages[s].Seconds;
+  }
+  json << "],\n  \"total_seconds\": " << Number(total) << ",\n  \"outputs\": {\"mesh\": "
+       << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath)
+       << ", \"picture\": " << (outputs.PicturePath.empty() ? "null" : Quoted(outputs.PicturePath))
+       << "}";
+  if (std::isfinite(demoError))
+  {
+    json << ",\n  \"demo_mean_error_over_sqrt_area\": " << Number(demoError);
+  }
+  json << "\n}\n";
+  return json.str();
+}

@@ -1,0 +1,17 @@
+// The --json summary of a registration: transformation, scores, per-stage seconds and the
+// quality figures of each stage, as one JSON object.
+#ifndef JsonSummary_h
+#define JsonSummary_h
+
+#include "OutputFiles.h"
+#include "RegistrationPipeline.h"
+
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+
+#include <string>
+
+std::string JsonSummary(const std::string& source, const std::string& target,
+  const PipelineResult& result, const OutputFiles& outputs, double demoError);
+
+#endif

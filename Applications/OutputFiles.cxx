@@ -1,0 +1,158 @@
+#include "OutputFiles.h"
+
+#include "CorrespondencePicture.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+bool Exists(const std::string& path)
+{
+  struct stat info;
+  return stat(path.c_str(), &info) == 0;
+}
+
+std::string Folder(const std::string& path)
+{
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
+}
+}
+
+OutputFiles::~OutputFiles()
+{
+  for (const auto& path : this->Written)
+  {
+    std::remove(this->Temporary(path).c_str());
+  }
+}
+
+std::string OutputFiles::Temporary(const std::string& path) const
+{
+  return path + ".partial-" + std::to_string(getpid());
+}
+
+bool OutputFiles::Plan(
+  const std::string& output, const std::string& picture, bool force, std::string& error)
+{
+  std::string stem = output;
+  if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".vtp") == 0)
+  {
+    stem.resize(stem.size() - 4);
+  }
+  this->MeshPath = stem + ".vtp";
+  this->CsvPath = stem + ".csv";
+  this->PicturePath = picture;
+  for (const auto& path : { this->MeshPath, this->CsvPath, this->PicturePath })
+  {
+    if (path.empty())
+    {
+      continue;
+    }
+    if (!Exists(Folder(path)))
+    {
+      error = path + ": the folder " + Folder(path) + " does not exist";
+      return false;
+    }
+    if (Exists(path) && !force)
+    {
+      error = path + ": exists already (use --force to overwrite)";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool OutputFiles::WriteMesh(vtkPolyData* correspondence, std::string& error)
+{
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(correspondence);
+  writer->SetDataModeToBinary();
+  writer->SetFileName(this->Temporary(this->MeshPath).c_str());
+  this->Written.push_back(this->MeshPath);
+  if (writer->Write() != 1)
+  {
+    error = this->MeshPath + ": cannot write the file";
+    return false;
+  }
+  return true;
+}
+
+bool OutputFiles::WriteCsv(vtkPolyData* correspondence, vtkPolyData* targetMap, std::string& error)
+{
+  std::ofstream csv(this->Temporary(this->CsvPath));
+  this->Written.push_back(this->CsvPath);
+  vtkDataArray* cells = correspondence->GetPointData()->GetArray("TargetCellId");
+  vtkDataArray* weights = correspondence->GetPointData()->GetArray("TargetBarycentric");
+  vtkDataArray* mapped = correspondence->GetPointData()->GetArray("MappedPoints");
+  if (!csv || !cells || !weights || !mapped)
+  {
+    error = this->CsvPath + ": cannot write the file";
+    return false;
+  }
+  csv << "source_vertex,target_triangle,target_vertex_0,target_vertex_1,target_vertex_2,"
+         "barycentric_0,barycentric_1,barycentric_2,mapped_x,mapped_y,mapped_z\n";
+  csv.precision(17);
+  for (vtkIdType i = 0; i < correspondence->GetNumberOfPoints(); ++i)
+  {
+    const auto cell = static_cast<vtkIdType>(cells->GetComponent(i, 0));
+    vtkIdType npts;
+    const vtkIdType* ids;
+    targetMap->GetCellPoints(cell, npts, ids);
+    csv << i << ',' << cell << ',' << ids[0] << ',' << ids[1] << ',' << ids[2];
+    for (int k = 0; k < 3; ++k)
+    {
+      csv << ',' << weights->GetComponent(i, k);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      csv << ',' << mapped->GetComponent(i, k);
+    }
+    csv << '\n';
+  }
+  if (!csv)
+  {
+    error = this->CsvPath + ": cannot write the file";
+    return false;
+  }
+  return true;
+}
+
+bool OutputFiles::WritePicture(vtkPolyData* alignedSource, vtkPolyData* target, std::string& error)
+{
+  if (this->PicturePath.empty())
+  {
+    return true;
+  }
+  this->Written.push_back(this->PicturePath);
+  if (!RenderCorrespondencePicture(
+        alignedSource, target, this->Temporary(this->PicturePath), error))
+  {
+    error = this->PicturePath + ": " + error;
+    return false;
+  }
+  return true;
+}
+
+bool OutputFiles::Commit(std::string& error)
+{
+  for (const auto& path : this->Written)
+  {
+    if (std::rename(this->Temporary(path).c_str(), path.c_str()) != 0)
+    {
+      error = path + ": cannot move the finished file into place";
+      return false;
+    }
+  }
+  this->Written.clear();
+  return true;
+}

@@ -1,0 +1,40 @@
+// The files mobius-register writes. Everything is written to temporary files first and
+// renamed into place only when the whole job has succeeded, so a failure leaves no partial
+// output behind; existing files are never replaced without --force.
+#ifndef OutputFiles_h
+#define OutputFiles_h
+
+#include "vtkPolyData.h"
+
+#include <string>
+#include <vector>
+
+class OutputFiles
+{
+public:
+  ~OutputFiles();
+
+  /// Decides the paths from -o (a prefix, or a .vtp path) and --png; fails if a file
+  /// exists and `force` is off, or if the folder does not exist.
+  bool Plan(const std::string& output, const std::string& picture, bool force, std::string& error);
+
+  /// The correspondence output as VTP (inline binary: Debian bookworm's expat cannot read
+  /// VTK 9.2's appended data back).
+  bool WriteMesh(vtkPolyData* correspondence, std::string& error);
+  /// Per source vertex: target triangle, its three vertices, barycentric coordinates and
+  /// the mapped position.
+  bool WriteCsv(vtkPolyData* correspondence, vtkPolyData* targetMap, std::string& error);
+  /// The picture, rendered by RenderCorrespondencePicture into a temporary file.
+  bool WritePicture(vtkPolyData* alignedSource, vtkPolyData* target, std::string& error);
+
+  /// Moves the temporary files into place.
+  bool Commit(std::string& error);
+
+  std::string MeshPath, CsvPath, PicturePath;
+
+private:
+  std::string Temporary(const std::string& path) const;
+  std::vector<std::string> Written; // final paths whose temporary file exists
+};
+
+#endif

@@ -1,0 +1,166 @@
+#include "RegistrationPipeline.h"
+
+#include "vtkDenseCorrespondence.h"
+#include "vtkMobiusCenter.h"
+#include "vtkSO3Register.h"
+#include "vtkSphericalConformalMap.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace
+{
+// Collects a filter's errors and warnings (instead of letting VTK print them) and forwards
+// its progress.
+class FilterMonitor
+{
+public:
+  FilterMonitor(vtkAlgorithm* filter, std::string stage, const StageProgress& progress)
+    : Stage(std::move(stage))
+    , Progress(progress)
+  {
+    this->Messages->SetClientData(this);
+    this->Messages->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
+      auto monitor = static_cast<FilterMonitor*>(self);
+      std::string text = data ? static_cast<const char*>(data) : "";
+      // VTK prefixes messages with the class and address; keep the sentence.
+      const auto colon = text.find("): ");
+      if (colon != std::string::npos)
+      {
+        text = text.substr(colon + 3);
+      }
+      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      {
+        text.pop_back();
+      }
+      if (event == vtkCommand::ErrorEvent)
+      {
+        if (monitor->Error.empty())
+        {
+          monitor->Error = text;
+        }
+      }
+      else
+      {
+        monitor->Warnings.push_back(text);
+      }
+    });
+    this->OnProgress->SetClientData(this);
+    this->OnProgress->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
+      auto monitor = static_cast<FilterMonitor*>(self);
+      if (monitor->Progress && data)
+      {
+        monitor->Progress(monitor->Stage, *static_cast<double*>(data));
+      }
+    });
+    filter->AddObserver(vtkCommand::ErrorEvent, this->Messages);
+    filter->AddObserver(vtkCommand::WarningEvent, this->Messages);
+    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Ignore);
+    filter->AddObserver(vtkCommand::ProgressEvent, this->OnProgress);
+  }
+
+  std::string Stage;
+  std::string Error;
+  std::vector<std::string> Warnings;
+
+private:
+  StageProgress Progress;
+  vtkNew<vtkCallbackCommand> Messages;
+  vtkNew<vtkCallbackCommand> OnProgress;
+  vtkNew<vtkCallbackCommand> Ignore; // the executive's "returned failure" repeats the error
+};
+
+// Runs `filter`, timing it as `stage`. False (with `error` set) if it failed.
+bool RunStage(vtkPolyDataAlgorithm* filter, const std::string& stage, const std::string& subject,
+  const StageProgress& progress, PipelineResult& result, vtkSmartPointer<vtkPolyData>& output,
+  std::string& error)
+{
+  FilterMonitor monitor(filter, stage, progress);
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.Stages.push_back({ stage, seconds });
+  for (const auto& warning : monitor.Warnings)
+  {
+    result.Warnings.push_back(subject + ": " + warning);
+  }
+  output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(filter->GetOutput());
+  if (!monitor.Error.empty() || output->GetNumberOfPoints() == 0)
+  {
+    error = subject + ": " + (monitor.Error.empty() ? stage + " produced no output" : monitor.Error);
+    return false;
+  }
+  return true;
+}
+}
+
+double FieldValue(vtkPolyData* data, const char* name, int component)
+{
+  vtkDataArray* array = data ? data->GetFieldData()->GetArray(name) : nullptr;
+  return array && component < array->GetNumberOfComponents() ? array->GetComponent(0, component)
+                                                             : std::nan("");
+}
+
+bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string& sourceName,
+  const std::string& targetName, const PipelineOptions& options, PipelineResult& result,
+  std::string& error, const StageProgress& progress)
+{
+  vtkPolyData* inputs[2] = { source, target };
+  const std::string names[2] = { sourceName, targetName };
+  vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
+  vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
+  const char* which[2] = { "source", "target" };
+  for (int k = 0; k < 2; ++k)
+  {
+    vtkNew<vtkSphericalConformalMap> map;
+    map->SetInputData(inputs[k]);
+    map->SetMaximumNumberOfIterations(options.FlowIterations);
+    map->SetConvergenceTolerance(options.FlowTolerance);
+    map->SetCenterBetweenSteps(options.CenterBetweenSteps);
+    map->SetFillHoles(options.FillHoles);
+    map->SetKeepLargestComponent(options.KeepLargestComponent);
+    if (!RunStage(map, std::string("conformal map (") + which[k] + ")", names[k], progress,
+          result, *maps[k], error))
+    {
+      return false;
+    }
+    vtkNew<vtkMobiusCenter> center;
+    center->SetInputData(*maps[k]);
+    center->SetTolerance(options.CenteringTolerance);
+    if (!RunStage(center, std::string("centering (") + which[k] + ")", names[k], progress,
+          result, *centered[k], error))
+    {
+      return false;
+    }
+  }
+
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceData(result.SourceCentered);
+  registration->SetTargetData(result.TargetCentered);
+  registration->SetResolution(options.Resolution);
+  registration->SetSmoothingTime(options.SmoothingTime);
+  registration->SetTransformMode(options.TransformMode);
+  registration->SetNumberOfCandidates(options.NumberOfCandidates);
+  if (!RunStage(registration, "rotational alignment", sourceName + " -> " + targetName, progress,
+        result, result.Aligned, error))
+  {
+    return false;
+  }
+
+  vtkNew<vtkDenseCorrespondence> correspondence;
+  correspondence->SetSourceData(result.Aligned);
+  correspondence->SetTargetData(result.TargetCentered);
+  correspondence->SetOutputGeometry(options.OutputGeometry);
+  return RunStage(correspondence, "dense correspondence", sourceName + " -> " + targetName,
+    progress, result, result.Correspondence, error);
+}

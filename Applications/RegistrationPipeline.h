@@ -1,0 +1,62 @@
+// The whole registration job on two meshes, as the command-line program and the benchmark
+// run it: conformal map and centering of each mesh, rotational alignment, dense
+// correspondence. Times each stage, reports progress, and turns the filters' error
+// messages into one message naming the input they concern.
+#ifndef RegistrationPipeline_h
+#define RegistrationPipeline_h
+
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+struct PipelineOptions
+{
+  // vtkSphericalConformalMap
+  int FlowIterations = 100;
+  double FlowTolerance = 1e-4;
+  bool CenterBetweenSteps = false;
+  bool FillHoles = false;
+  bool KeepLargestComponent = false;
+  // vtkMobiusCenter
+  double CenteringTolerance = 1e-10;
+  // vtkSO3Register
+  int Resolution = 256;
+  double SmoothingTime = 5e-4;
+  int TransformMode = 0; // 0 rotations, 1 reflections, 2 both
+  int NumberOfCandidates = 4;
+  // vtkDenseCorrespondence
+  int OutputGeometry = 0; // 0 target surface, 1 source surface
+};
+
+struct StageTiming
+{
+  std::string Name;
+  double Seconds = 0;
+};
+
+struct PipelineResult
+{
+  vtkSmartPointer<vtkPolyData> SourceMap, TargetMap;           // conformal maps
+  vtkSmartPointer<vtkPolyData> SourceCentered, TargetCentered; // centered maps
+  vtkSmartPointer<vtkPolyData> Aligned;                        // source moved by vtkSO3Register
+  vtkSmartPointer<vtkPolyData> Correspondence;                 // vtkDenseCorrespondence output
+  std::vector<StageTiming> Stages;
+  std::vector<std::string> Warnings;
+};
+
+/// Called with a stage name and its progress in [0, 1].
+using StageProgress = std::function<void(const std::string& stage, double fraction)>;
+
+/// Runs the job. On failure returns false and sets `error` to one line naming what failed
+/// (with `sourceName` / `targetName` for the stage that concerns one input).
+bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string& sourceName,
+  const std::string& targetName, const PipelineOptions& options, PipelineResult& result,
+  std::string& error, const StageProgress& progress = {});
+
+/// Value of component `component` of field-data array `name`, NaN if absent.
+double FieldValue(vtkPolyData* data, const char* name, int component = 0);
+
+#endif

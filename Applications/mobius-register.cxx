@@ -1,0 +1,195 @@
+// mobius-register: dense correspondence between two genus-0 meshes from the command line.
+// See UsageText() in CommandLine.cxx, or run mobius-register --help.
+#include "CommandLine.h"
+#include "DemoMeshes.h"
+#include "JsonSummary.h"
+#include "OutputFiles.h"
+#include "RegistrationPipeline.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkNew.h"
+#include "vtkSurfaceMeshReader.h"
+#include "vtkVersion.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+const char* const Program = "mobius-register";
+
+int Fail(const std::string& message, int status = 1)
+{
+  std::cerr << Program << ": " << message << std::endl;
+  return status;
+}
+
+// Reads a mesh, turning the reader's error into one line that names the file.
+bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::string& error)
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  std::string message;
+  vtkNew<vtkCallbackCommand> catcher;
+  catcher->SetClientData(&message);
+  catcher->SetCallback([](vtkObject*, unsigned long, void* out, void* data) {
+    auto text = static_cast<std::string*>(out);
+    if (text->empty() && data)
+    {
+      *text = static_cast<const char*>(data);
+    }
+  });
+  vtkNew<vtkCallbackCommand> ignore;
+  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (!message.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    // The reader's message starts with the file name already; drop VTK's class prefix.
+    const auto start = message.find(path);
+    error = start != std::string::npos ? message.substr(start) : path + ": cannot read the mesh";
+    while (!error.empty() && (error.back() == '\n' || error.back() == ' '))
+    {
+      error.pop_back();
+    }
+    return false;
+  }
+  mesh = reader->GetOutput();
+  return true;
+}
+
+// Stage name and percentage on one terminal line, redrawn in place.
+StageProgress TerminalProgress(bool enabled)
+{
+  if (!enabled)
+  {
+    return {};
+  }
+  return [](const std::string& stage, double fraction) {
+    std::fprintf(stderr, "\r  %-28s %3d%%%s", stage.c_str(), static_cast<int>(100 * fraction + 0.5),
+      fraction >= 1.0 ? "\n" : "");
+    std::fflush(stderr);
+  };
+}
+
+double RotationAngleDegrees(vtkPolyData* aligned)
+{
+  const double trace = FieldValue(aligned, "Rotation", 0) + FieldValue(aligned, "Rotation", 4) +
+    FieldValue(aligned, "Rotation", 8);
+  const double det = FieldValue(aligned, "Determinant");
+  // For a reflection T = -R: the angle of R.
+  const double c = (det * trace - 1) / 2;
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / 3.14159265358979323846;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  CommandLine commandLine;
+  std::string error;
+  if (!ParseCommandLine(argc, argv, commandLine, error))
+  {
+    return Fail(error, 2);
+  }
+  if (commandLine.Help)
+  {
+    std::cout << UsageText();
+    return 0;
+  }
+  if (commandLine.Version)
+  {
+    std::cout << Program << " " << MOBIUS_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
+              << ")\n";
+    return 0;
+  }
+
+  vtkSmartPointer<vtkPolyData> source, target;
+  std::string sourceName = commandLine.Source, targetName = commandLine.Target;
+  DemoMeshes demo;
+  if (commandLine.Demo)
+  {
+    if (!MakeDemoMeshes(demo, error))
+    {
+      return Fail(error);
+    }
+    source = demo.Source;
+    target = demo.Target;
+    sourceName = demo.SourcePath;
+    targetName = "deformed copy of " + demo.SourcePath;
+    if (commandLine.Output.empty())
+    {
+      mkdir("mobius-demo", 0755);
+      commandLine.Output = "mobius-demo/demo";
+      if (commandLine.Picture.empty())
+      {
+        commandLine.Picture = "mobius-demo/demo.png";
+      }
+    }
+  }
+  OutputFiles outputs;
+  if (!outputs.Plan(commandLine.Output, commandLine.Picture, commandLine.Force, error))
+  {
+    return Fail(error);
+  }
+  if (!commandLine.Demo &&
+    (!ReadMesh(commandLine.Source, source, error) || !ReadMesh(commandLine.Target, target, error)))
+  {
+    return Fail(error);
+  }
+
+  const bool verbose = !commandLine.Quiet;
+  PipelineResult result;
+  if (!RunRegistration(source, target, sourceName, targetName, commandLine.Pipeline, result,
+        error, TerminalProgress(verbose && isatty(STDERR_FILENO))))
+  {
+    return Fail(error);
+  }
+  if (!outputs.WriteMesh(result.Correspondence, error) ||
+    !outputs.WriteCsv(result.Correspondence, result.TargetCentered, error) ||
+    !outputs.WritePicture(result.Aligned, result.TargetCentered, error) || !outputs.Commit(error))
+  {
+    return Fail(error);
+  }
+
+  const double demoError =
+    commandLine.Demo ? DemoMeanError(result.Correspondence, target) : std::nan("");
+  if (verbose)
+  {
+    for (const auto& warning : result.Warnings)
+    {
+      std::cerr << Program << ": warning: " << warning << "\n";
+    }
+    double total = 0;
+    for (const auto& stage : result.Stages)
+    {
+      std::fprintf(stderr, "  %-28s %8.3f s\n", stage.Name.c_str(), stage.Seconds);
+      total += stage.Seconds;
+    }
+    std::fprintf(stderr, "  %-28s %8.3f s\n", "total", total);
+  }
+  if (commandLine.Json)
+  {
+    std::cout << JsonSummary(sourceName, targetName, result, outputs, demoError);
+  }
+  else if (verbose)
+  {
+    std::cout << "Mapped " << result.Correspondence->GetNumberOfPoints() << " vertices of "
+              << sourceName << " onto " << targetName << ": "
+              << (FieldValue(result.Aligned, "Determinant") < 0 ? "reflection" : "rotation")
+              << " by " << RotationAngleDegrees(result.Aligned) << " degrees, registration error "
+              << FieldValue(result.Aligned, "RegistrationError") << ".\n";
+    if (commandLine.Demo)
+    {
+      std::cout << "Demo ground truth (vertex i <-> vertex i): mean error " << demoError
+                << " of sqrt(target area).\n";
+    }
+    std::cout << "Wrote " << outputs.MeshPath << ", " << outputs.CsvPath
+              << (outputs.PicturePath.empty() ? "" : ", " + outputs.PicturePath) << ".\n";
+  }
+  return 0;
+}
