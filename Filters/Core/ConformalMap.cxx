@@ -2,6 +2,7 @@
 
 #include "CotangentLaplacian.h"
 #include "MeshTopology.h"
+#include "MobiusCentering.h"
 #include "SphericalFlipRepair.h"
 #include "SqueezedRegionRefinement.h"
 
@@ -10,7 +11,6 @@
 #include <Eigen/SparseCholesky>
 
 #include <cmath>
-#include <cstdlib>
 #include <exception>
 #include <sstream>
 
@@ -119,6 +119,8 @@ ConformalMapResult MapToSphere(
     return Fail(result, "the input surface has no area");
   }
 
+  const Vector originalAreas = TriangleAreas(x, triangles); // centering weights
+
   SparseMatrix stiffness;
   CotangentStiffnessInfo stiffnessInfo;
   if (!BuildCotangentStiffness(x, triangles, p.IntrinsicDelaunay, stiffness, stiffnessInfo))
@@ -158,9 +160,8 @@ ConformalMapResult MapToSphere(
     }
     // Solve for the displacement, (M_t + delta L) d = -delta L x_t, rather than for x_{t+1}
     // itself: the same step, but the solver's rounding error is then relative to the
-    // (small, near convergence) displacement instead of the sphere's radius. Limbs that a
-    // conformal map shrinks by 1e-12 would otherwise be folded by rounding noise.
-    // One solve for the three coordinates (a 3-column right-hand side).
+    // (small, near convergence) displacement instead of the sphere's radius, which matters
+    // for limbs the map shrinks to 1e-10. One solve for the three coordinates.
     const Eigen::MatrixXd rhs = -p.TimeStep * ApplyStiffnessToDifferences(stiffness, x);
     next = x + solver.solve(rhs);
     if (!NormalizeShape(next, triangles, nextMass))
@@ -169,11 +170,35 @@ ConformalMapResult MapToSphere(
       s << "the flow produced non-finite or degenerate positions at step " << iteration + 1;
       return Fail(result, s.str());
     }
+    if (p.MobiusCentering)
+    {
+      // Project onto the unit sphere and undo the step's drift by the canonical Möbius
+      // centering (paper §7.1): without it the flow slides toward a point (hand_cgal: 1227
+      // flipped triangles after 100 steps) and never meets the convergence test.
+      for (Index i = 0; i < next.rows(); ++i)
+      {
+        const double r = next.row(i).norm();
+        if (!(r > 0.0))
+        {
+          return Fail(result, "a vertex reached the center during the flow; cannot center");
+        }
+        next.row(i) /= r;
+      }
+      MobiusCenteringResult centering;
+      if (!CenterSphericalMap(next, triangles, originalAreas, MobiusCenteringParameters(), centering))
+      {
+        return Fail(result, "Möbius centering between flow steps failed: " + centering.Error);
+      }
+      if (!NormalizeShape(next, triangles, nextMass))
+      {
+        return Fail(result, "Möbius centering produced degenerate positions");
+      }
+    }
     if (p.BetweenSteps)
     {
       if (!p.BetweenSteps(next, iteration + 1))
       {
-        return Fail(result, "the step between flow iterations (centering) failed");
+        return Fail(result, "the step between flow iterations (BetweenSteps) failed");
       }
       if (!NormalizeShape(next, triangles, nextMass))
       {
@@ -218,20 +243,25 @@ ConformalMapResult MapToSphere(
   {
     const Eigen::Vector3d a = x.row(triangles(t, 0)), b = x.row(triangles(t, 1)),
                           c = x.row(triangles(t, 2));
-    volume += a.dot(b.cross(c));
+    volume += SignedVolume(a, b, c);
   }
   if (volume < 0.0)
   {
     x.col(0) *= -1.0;
     result.Reflected = true;
   }
-  if (p.RefineSqueezedRegions)
+  if (p.SqueezedRegionThreshold > 0.0)
   {
-    result.Refinement = RefineSqueezedRegions(x, triangles, points, getenv("TAU") ? atof(getenv("TAU")) : 1e-3);
+    // On failure the affected regions keep the flow's positions: still a valid map.
+    result.Refinement = RefineSqueezedRegions(x, triangles, points, p.SqueezedRegionThreshold);
   }
   if (p.FlipRepairPasses > 0)
   {
     result.FlipRepair = RepairFlippedTriangles(x, triangles, p.FlipRepairPasses);
+  }
+  if (!x.allFinite())
+  {
+    return Fail(result, "the map has non-finite coordinates");
   }
   result.Distortion = MeasureMapDistortion(points, x, triangles);
   result.SpherePoints.swap(x);

@@ -7,8 +7,17 @@
 // backward-Euler step solves (M_t + delta L) x_{t+1} = M_t x_t, then recenters x_{t+1} at
 // its area-weighted centroid and rescales it to unit area. Because L stays that of the input,
 // the flow does not pinch off like mean curvature flow; it converges to a round sphere, and
-// the vertices' positions on it are a conformal map. At the end the points are projected
-// radially onto the unit sphere.
+// the vertices' positions on it are a conformal map.
+//
+// What we add to the published flow, each for a measured reason:
+// - Möbius centering after every step (paper §7.1): stops the drift toward a point, so the
+//   flow converges (8-13 steps instead of 100 unconverged ones);
+// - the stiffness on the intrinsic Delaunay triangulation: needle triangles (0.01 degrees)
+//   give no extreme or negative weights;
+// - a convergence test, one symbolic factorization, a 3-column solve for the displacement;
+// - at the end: projection onto the unit sphere, mirroring if the triangles face inward,
+//   re-solving regions squeezed below 1e-7 in local coordinates, and local sweeps that
+//   unfold the few triangles still flipped (needles whose apex crosses the long edge).
 #ifndef mobius_ConformalMap_h
 #define mobius_ConformalMap_h
 
@@ -22,10 +31,10 @@
 
 namespace mobius
 {
-/// Optional step between flow iterations, given the current shape (centered, unit area) and
-/// the number of iterations done. It may replace the positions (e.g. by a Möbius-centered
-/// projection onto the sphere, paper §7.1; the flow re-normalizes them afterwards). Return
-/// false to fail the map (set the reason in the hook's own state).
+/// Optional step between flow iterations, given the current shape (centered, unit area; on
+/// the sphere if MobiusCentering is on) and the number of iterations done. It may replace the
+/// positions (the flow re-normalizes them afterwards). Return false to fail the map (keep
+/// the reason in the hook's own state).
 using FlowStepHook = std::function<bool(Points& positions, int iteration)>;
 
 struct ConformalMapParameters
@@ -41,12 +50,20 @@ struct ConformalMapParameters
   /// Build the stiffness on the intrinsic Delaunay triangulation (robust to needle
   /// triangles; identical on meshes that are already Delaunay).
   bool IntrinsicDelaunay = true;
-  /// Re-solve regions the map squeezes below 1e-3 in local coordinates (see
-  /// SqueezedRegionRefinement.h).
-  bool RefineSqueezedRegions = true;
+  /// Re-solve the regions whose edges the map squeezes below this length on the unit sphere
+  /// (long limbs) in local coordinates with positive weights (see
+  /// SqueezedRegionRefinement.h); 0: off. 1e-7 leaves every well-resolved map alone
+  /// (hand_smpl, armadillo, bunny: untouched) and takes the camel's mean quasi-conformal
+  /// distortion from 1551 to 1.39, the man's from 48 to 1.30.
+  double SqueezedRegionThreshold = 1e-7;
   /// Sweeps of local flip repair after the flow (see SphericalFlipRepair.h); 0: none.
   int FlipRepairPasses = 100;
-  /// Optional centering between steps (see FlowStepHook); empty: none.
+  /// After each step, project onto the sphere and apply the canonical Möbius centering of
+  /// the map (CenterSphericalMap, original areas as weights; paper §7.1). Stops the drift
+  /// toward a point that otherwise collapses limbs and keeps the flow from converging; with
+  /// it the flow converges in 8-13 steps on every development mesh.
+  bool MobiusCentering = true;
+  /// Optional extra step between iterations (see FlowStepHook), after the centering.
   FlowStepHook BetweenSteps;
   /// Progress in [0, 1]; returning false aborts.
   ProgressCallback Progress;

@@ -27,6 +27,11 @@ Eigen::Matrix2d PlanarEdges(
 }
 }
 
+double SignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+{
+  return a.dot((b - a).cross(c - a));
+}
+
 double TriangleQuasiConformalDistortion(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
   const Eigen::Vector3d& p2, const Eigen::Vector3d& q0, const Eigen::Vector3d& q1,
   const Eigen::Vector3d& q2)
@@ -65,7 +70,7 @@ MapDistortion MeasureMapDistortion(
                           q2 = mapped.row(triangles(t, 2));
     originalArea[t] = 0.5 * (p1 - p0).cross(p2 - p0).norm();
     mappedArea[t] = 0.5 * (q1 - q0).cross(q2 - q0).norm();
-    d.FlippedTriangles += q0.dot(q1.cross(q2)) <= 0.0 ? 1 : 0;
+    d.FlippedTriangles += SignedVolume(q0, q1, q2) <= 0.0 ? 1 : 0;
   }
   const double originalTotal = originalArea.sum(), mappedTotal = mappedArea.sum();
   double weightedSum = 0.0, weight = 0.0;

@@ -22,6 +22,12 @@ struct MapDistortion
   double MaxAreaRatio = 1.0;
 };
 
+/// Six times the signed volume of the tetrahedron (0, a, b, c), computed as
+/// a . ((b - a) x (c - a)): the textbook a . (b x c) cancels catastrophically for a tiny
+/// triangle on the unit sphere (a 1e-9 triangle's volume drowns in 1e-16 rounding), which
+/// reports correct triangles as flipped.
+double SignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
 /// Distortion of the map original[i] -> mapped[i] over the triangles. Original triangles
 /// with no area are skipped (they have no defined distortion). `mapped` is taken to be
 /// centered at the origin for the flip count (true of a spherical map).

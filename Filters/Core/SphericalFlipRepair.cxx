@@ -1,5 +1,7 @@
 #include "SphericalFlipRepair.h"
 
+#include "MapDistortion.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -13,7 +15,7 @@ bool IsFlipped(const Points& x, const Triangles& triangles, Index t)
 {
   const Eigen::Vector3d a = x.row(triangles(t, 0)), b = x.row(triangles(t, 1)),
                         c = x.row(triangles(t, 2));
-  return a.dot(b.cross(c)) <= 0.0;
+  return SignedVolume(a, b, c) <= 0.0;
 }
 }
 

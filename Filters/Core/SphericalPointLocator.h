@@ -49,13 +49,15 @@ class SphericalPointLocator
 {
 public:
   /// Builds the cap hierarchy (O(n log n)). spherePoints must lie on the unit sphere within
-  /// 1e-6 (they are normalized internally); triangles are vertex indices, outward oriented,
+  /// 1e-6; they are kept as given (a copy), so the barycentric coordinates are exactly those of
+  /// the caller's triangles, even 1e-11-wide ones. Triangles are vertex indices, outward oriented,
   /// though folded (det(a, b, c) < 0) and degenerate triangles are tolerated. Returns false
   /// with a message naming the problem for an empty mesh, an index out of range, a point off
   /// the sphere, or a non-finite coordinate; the locator is then empty.
   bool Build(const Points& spherePoints, const Triangles& triangles, std::string& error);
 
-  /// Locates p (normalized first; it need not be exactly on the sphere). Thread-safe.
+  /// Locates p, which need not be exactly on the sphere (its direction counts; a p already unit
+  /// to 1e-14 is used as given, so vertices and edge points stay exact). Thread-safe.
   /// A point inside several triangles (on an edge, at a vertex, or in a fold) gets one of them.
   SphericalLocation Locate(const Eigen::Vector3d& p) const;
 
@@ -82,22 +84,23 @@ private:
     std::int32_t TriangleCount = 0; // 0 for inner nodes
   };
 
-  /// A triangle in hierarchy order, with what containment needs at hand.
+  /// A triangle in hierarchy order, with what containment needs at hand. 32-bit indices halve
+  /// the memory; Build() refuses meshes too large for them.
   struct LeafTriangle
   {
-    std::array<Index, 3> Vertices;
-    Index Id = 0;              // row in the input triangle array
-    std::int32_t Orientation = 0; // sign of det(a, b, c): +1 outward, -1 folded, 0 degenerate
+    std::array<std::int32_t, 3> Vertices;
+    std::int32_t Id;          // row in the input triangle array
+    std::int32_t Orientation; // sign of det(a, b, c): +1 outward, -1 folded, 0 degenerate
   };
 
   struct Primitive;
-  int BuildNode(std::int32_t node, std::vector<Primitive>& primitives, std::int32_t begin,
-    std::int32_t end);
-  bool Contains(const LeafTriangle& triangle, const Eigen::Vector3d& p,
-    Eigen::Vector3d& barycentric) const;
+  int BuildNode(std::int32_t node, std::vector<Primitive>& primitives, const Triangles& triangles,
+    const Points& unitPoints, std::int32_t begin, std::int32_t end);
+  bool Contains(
+    const LeafTriangle& triangle, const Eigen::Vector3d& p, Eigen::Vector3d& barycentric) const;
   SphericalLocation LocateNearest(const Eigen::Vector3d& p) const;
 
-  Points SpherePoints; // normalized copy of the input points
+  Points SpherePoints; // the input points, as given
   std::vector<Node> Nodes;
   std::vector<LeafTriangle> LeafTriangles;
   int Depth = 0;

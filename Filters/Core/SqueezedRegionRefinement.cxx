@@ -2,8 +2,8 @@
 
 #include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <cmath>
-
 #include <vector>
 
 namespace mobius
@@ -42,12 +42,7 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
 {
   SqueezedRegionRefinementResult result;
   const Index n = x.rows();
-  const SparseMatrix weights = MeanValueWeights(original, triangles);
-  if (!Eigen::Map<const Vector>(weights.valuePtr(), weights.nonZeros()).allFinite())
-  {
-    result.Success = false;
-    return result;
-  }
+  SparseMatrix weights; // built when the first squeezed region is found
   std::vector<char> refined(static_cast<size_t>(n), 0);
   for (double tau = largestThreshold; tau > 1e-15; tau *= 1e-2)
   {
@@ -75,6 +70,15 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
     if (members.empty())
     {
       break;
+    }
+    if (weights.nonZeros() == 0)
+    {
+      weights = MeanValueWeights(original, triangles);
+      if (!Eigen::Map<const Vector>(weights.valuePtr(), weights.nonZeros()).allFinite())
+      {
+        result.Success = false;
+        break;
+      }
     }
     const Index m = static_cast<Index>(members.size());
     // Regions (connected components of the members) and each one's local origin c: the
