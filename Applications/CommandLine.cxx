@@ -53,7 +53,7 @@ std::string UsageText()
           "  --tolerance T          flow convergence tolerance (default "
        << defaults.FlowTolerance
        << ")\n"
-          "  --center-flow          Moebius-center between flow steps\n"
+          "  --no-center-flow       plain CMCF: no Moebius centering between flow steps\n"
           "  --fill-holes           close holes instead of rejecting open meshes\n"
           "  --keep-largest-component  map only the largest connected component\n"
           "Registration:\n"
@@ -115,9 +115,9 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
     {
       commandLine.Json = true;
     }
-    else if (option == "--center-flow")
+    else if (option == "--no-center-flow")
     {
-      commandLine.Pipeline.CenterBetweenSteps = true;
+      commandLine.Pipeline.CenterBetweenSteps = false;
     }
     else if (option == "--fill-holes")
     {

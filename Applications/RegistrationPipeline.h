@@ -17,7 +17,7 @@ struct PipelineOptions
   // vtkSphericalConformalMap
   int FlowIterations = 100;
   double FlowTolerance = 1e-4;
-  bool CenterBetweenSteps = false;
+  bool CenterBetweenSteps = true;
   bool FillHoles = false;
   bool KeepLargestComponent = false;
   // vtkMobiusCenter

@@ -1,15 +1,25 @@
-// mobius-benchmark: runs the pipeline stages on each mesh file given and prints a Markdown
-// table of per-stage wall-clock seconds (median of --repeat runs), the quality figures of
-// each stage and the process's peak resident memory.
+// mobius-benchmark: runs the pipeline stages on each mesh file given and prints Markdown
+// tables of wall-clock seconds (median of --repeat runs), the quality figures of each
+// stage and the process's peak resident memory.
 //
-//   mobius-benchmark [--repeat N] MESH [MESH ...]      (OBJ, OFF, PLY, STL, VTP, VTK)
+//   mobius-benchmark [--repeat N] [--resolutions 128,256,512] [--stages map,grid,register,correspond] MESH...
+//
+// map: vtkSphericalConformalMap + vtkMobiusCenter. grid: vtkSphericalScaleGrid at each
+// resolution (exact rasterization, forward and inverse transform). register: vtkSO3Register
+// of the centered map, rotated by a fixed rotation, back onto itself at each resolution
+// (both signals, both transforms, correlation and refinement), with the angle error of the
+// rotation found. correspond: vtkDenseCorrespondence of that pair.
+#include "vtkDenseCorrespondence.h"
 #include "vtkMobiusCenter.h"
+#include "vtkSO3Register.h"
 #include "vtkSphericalConformalMap.h"
+#include "vtkSphericalScaleGrid.h"
 #include "vtkSurfaceMeshReader.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
@@ -17,10 +27,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,7 +48,7 @@ double PeakMemoryMB()
 double Field(vtkPolyData* data, const char* name, int component = 0)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
-  return array ? array->GetComponent(0, component) : -1.0;
+  return array ? array->GetComponent(0, component) : std::nan("");
 }
 
 // Median wall-clock seconds of `repeat` runs of `stage`.
@@ -60,12 +72,60 @@ std::string BaseName(const std::string& path)
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// A fixed, generic rotation (about (1, 2, 3) by 50 degrees), row-major.
+void TestRotation(double r[9])
+{
+  const double axis[3] = { 1 / std::sqrt(14.0), 2 / std::sqrt(14.0), 3 / std::sqrt(14.0) };
+  const double angle = 50 * 3.14159265358979323846 / 180, c = std::cos(angle), s = std::sin(angle);
+  const double k[9] = { 0, -axis[2], axis[1], axis[2], 0, -axis[0], -axis[1], axis[0], 0 };
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      double kk = 0;
+      for (int m = 0; m < 3; ++m)
+      {
+        kk += k[3 * i + m] * k[3 * m + j];
+      }
+      r[3 * i + j] = (i == j) + s * k[3 * i + j] + (1 - c) * kk;
+    }
+  }
+}
+
+// Angle in degrees between the found transform (row-major) and the inverse of `applied`.
+double AngleErrorDegrees(const double found[9], const double applied[9])
+{
+  // trace(found * applied) = trace(found * inverse(applied)^T ...): for the exact answer
+  // found = applied^T, so found * applied = I.
+  double trace = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int m = 0; m < 3; ++m)
+    {
+      trace += found[3 * i + m] * applied[3 * m + i];
+    }
+  }
+  return std::acos(std::max(-1.0, std::min(1.0, (trace - 1) / 2))) * 180 / 3.14159265358979323846;
+}
+
+std::vector<int> ParseList(const std::string& text)
+{
+  std::vector<int> values;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    values.push_back(std::atoi(item.c_str()));
+  }
+  return values;
+}
+
 int Usage()
 {
-  std::cerr << "usage: mobius-benchmark [--repeat N] MESH [MESH ...]\n"
-               "Runs the conformal map and the centering on each mesh (OBJ, OFF, PLY, STL, VTP,\n"
-               "VTK) and prints per-stage seconds (median of N runs, default 3), quality\n"
-               "figures and peak memory as a Markdown table.\n";
+  std::cerr << "usage: mobius-benchmark [--repeat N] [--resolutions 128,256,512]\n"
+               "                        [--stages map,grid,register,correspond] MESH [MESH ...]\n"
+               "Per stage: seconds (median of N runs, default 3), quality figures and peak memory,\n"
+               "as Markdown tables. Meshes: .obj .off .ply .stl .vtp .vtk. Build Release to measure.\n";
   return 2;
 }
 }
@@ -73,6 +133,8 @@ int Usage()
 int main(int argc, char* argv[])
 {
   int repeat = 3;
+  std::vector<int> resolutions = { 128, 256, 512 };
+  std::string stages = "map,grid,register,correspond";
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i)
   {
@@ -81,7 +143,15 @@ int main(int argc, char* argv[])
     {
       repeat = std::max(1, std::atoi(argv[++i]));
     }
-    else if (argument == "-h" || argument == "--help" || argument.rfind("--", 0) == 0)
+    else if (argument == "--resolutions" && i + 1 < argc)
+    {
+      resolutions = ParseList(argv[++i]);
+    }
+    else if (argument == "--stages" && i + 1 < argc)
+    {
+      stages = argv[++i];
+    }
+    else if (argument.rfind("-", 0) == 0)
     {
       return Usage();
     }
@@ -94,13 +164,19 @@ int main(int argc, char* argv[])
   {
     return Usage();
   }
+  auto wants = [&stages](const char* stage) { return stages.find(stage) != std::string::npos; };
 
-  std::printf("| mesh | V | map s | map iterations | mean QC | max QC | flips | center s | "
-              "center iterations | final mu | peak MB |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   int status = 0;
+  std::ostringstream mapTable, gridTable, registerTable, correspondTable;
+  mapTable << "| mesh | V | map s | flow steps | mean QC | max QC | flips | center s | center steps | final mu |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  gridTable << "| mesh | N | scale grid s |\n|---|---:|---:|\n";
+  registerTable << "| mesh | N | register s | B' | rotation error (deg) | registration error |\n"
+                   "|---|---:|---:|---:|---:|---:|\n";
+  correspondTable << "| mesh | V | correspondence s | clamped points |\n|---|---:|---:|---:|\n";
   for (const auto& file : meshes)
   {
+    const std::string name = BaseName(file);
     vtkNew<vtkSurfaceMeshReader> reader;
     reader->SetFileName(file.c_str());
     reader->Update();
@@ -111,8 +187,7 @@ int main(int argc, char* argv[])
       status = 1;
       continue;
     }
-
-    vtkSmartPointer<vtkPolyData> map;
+    vtkSmartPointer<vtkPolyData> map, centered;
     const double mapSeconds = TimeMedian(repeat, [&] {
       vtkNew<vtkSphericalConformalMap> filter;
       filter->SetInputData(mesh);
@@ -125,20 +200,106 @@ int main(int argc, char* argv[])
       status = 1;
       continue;
     }
-    vtkSmartPointer<vtkPolyData> centered;
     const double centerSeconds = TimeMedian(repeat, [&] {
       vtkNew<vtkMobiusCenter> filter;
       filter->SetInputData(map);
       filter->Update();
       centered = filter->GetOutput();
     });
-
-    std::printf("| %s | %lld | %.3f | %.0f | %.4f | %.3f | %.0f | %.4f | %.0f | %.1e | %.0f |\n",
-      BaseName(file).c_str(), static_cast<long long>(mesh->GetNumberOfPoints()), mapSeconds,
+    char row[512];
+    std::snprintf(row, sizeof(row), "| %s | %lld | %.3f | %.0f | %.4f | %.1f | %.0f | %.4f | %.0f | %.1e |\n",
+      name.c_str(), static_cast<long long>(mesh->GetNumberOfPoints()), mapSeconds,
       Field(map, "ConformalFlowIterations"), Field(map, "MeanQuasiConformalDistortion"),
       Field(map, "MaxQuasiConformalDistortion"), Field(map, "FlippedTriangles"), centerSeconds,
-      Field(centered, "CenteringIterations"), Field(centered, "CenterOfMassNorm"), PeakMemoryMB());
-    std::fflush(stdout);
+      Field(centered, "CenteringIterations"), Field(centered, "CenterOfMassNorm"));
+    mapTable << row;
+
+    // The centered map rotated by a known rotation: registration must find its inverse.
+    double rotation[9];
+    TestRotation(rotation);
+    vtkNew<vtkPolyData> rotated;
+    rotated->DeepCopy(centered);
+    for (vtkIdType i = 0; i < rotated->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3] = { 0, 0, 0 };
+      rotated->GetPoint(i, p);
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          q[r] += rotation[3 * r + c] * p[c];
+        }
+      }
+      rotated->GetPoints()->SetPoint(i, q);
+    }
+    vtkSmartPointer<vtkPolyData> aligned;
+    for (int resolution : resolutions)
+    {
+      if (wants("grid"))
+      {
+        const double seconds = TimeMedian(repeat, [&] {
+          vtkNew<vtkSphericalScaleGrid> grid;
+          grid->SetInputData(centered);
+          grid->SetResolution(resolution);
+          grid->Update();
+        });
+        std::snprintf(row, sizeof(row), "| %s | %d | %.3f |\n", name.c_str(), resolution, seconds);
+        gridTable << row;
+      }
+      if (wants("register") || wants("correspond"))
+      {
+        const double seconds = TimeMedian(repeat, [&] {
+          vtkNew<vtkSO3Register> registration;
+          registration->SetSourceData(rotated);
+          registration->SetTargetData(centered);
+          registration->SetResolution(resolution);
+          registration->Update();
+          aligned = registration->GetOutput();
+        });
+        double found[9];
+        for (int k = 0; k < 9; ++k)
+        {
+          found[k] = Field(aligned, "Rotation", k);
+        }
+        std::snprintf(row, sizeof(row), "| %s | %d | %.3f | %.0f | %.4f | %.2e |\n", name.c_str(),
+          resolution, seconds, Field(aligned, "CorrelationBandwidth"),
+          AngleErrorDegrees(found, rotation), Field(aligned, "RegistrationError"));
+        registerTable << row;
+      }
+    }
+    if (wants("correspond") && aligned)
+    {
+      vtkSmartPointer<vtkPolyData> correspondence;
+      const double seconds = TimeMedian(repeat, [&] {
+        vtkNew<vtkDenseCorrespondence> filter;
+        filter->SetSourceData(aligned);
+        filter->SetTargetData(centered);
+        filter->Update();
+        correspondence = filter->GetOutput();
+      });
+      std::snprintf(row, sizeof(row), "| %s | %lld | %.3f | %.0f |\n", name.c_str(),
+        static_cast<long long>(aligned->GetNumberOfPoints()), seconds,
+        Field(correspondence, "ClampedPoints"));
+      correspondTable << row;
+    }
+    std::fprintf(stderr, "%s done, peak memory so far %.0f MB\n", name.c_str(), PeakMemoryMB());
   }
+  if (wants("map"))
+  {
+    std::cout << "Conformal map and centering\n\n" << mapTable.str() << "\n";
+  }
+  if (wants("grid"))
+  {
+    std::cout << "Scale-factor grid\n\n" << gridTable.str() << "\n";
+  }
+  if (wants("register"))
+  {
+    std::cout << "Rotational alignment (a rotated copy back onto the map)\n\n" << registerTable.str() << "\n";
+  }
+  if (wants("correspond"))
+  {
+    std::cout << "Dense correspondence\n\n" << correspondTable.str() << "\n";
+  }
+  std::cout << "Peak resident memory: " << PeakMemoryMB() << " MB\n";
   return status;
 }

@@ -2,7 +2,6 @@
 
 #include "ConformalMap.h"
 #include "MeshTopology.h"
-#include "MobiusCentering.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkCellArray.h"
@@ -270,6 +269,7 @@ int vtkSphericalConformalMap::RequestData(
   parameters.ConvergenceTolerance = this->ConvergenceTolerance;
   parameters.IntrinsicDelaunay = this->IntrinsicDelaunay;
   parameters.FlipRepairPasses = this->FlipRepairPasses;
+  parameters.MobiusCentering = this->CenterBetweenSteps;
   parameters.Progress = [this](double fraction) {
     this->UpdateProgress(fraction);
     return !this->GetAbortExecute();
@@ -281,35 +281,13 @@ int vtkSphericalConformalMap::RequestData(
                           c = points.row(triangles(t, 2));
     surfaceAreas[t] = 0.5 * (b - a).cross(c - a).norm();
   }
-  std::string centeringError;
-  if (this->CenterBetweenSteps)
-  {
-    // Paper Section 7.1: project the current shape onto the sphere and Möbius-center it, so
-    // the flow cannot drift toward a map that crowds everything into one point.
-    parameters.BetweenSteps = [&](mobius::Points& positions, int) {
-      for (Eigen::Index i = 0; i < positions.rows(); ++i)
-      {
-        positions.row(i).normalize();
-      }
-      mobius::MobiusCenteringResult centering;
-      if (!mobius::CenterSphericalMap(positions, triangles, surfaceAreas, {}, centering))
-      {
-        centeringError = centering.Error;
-        return false;
-      }
-      return true;
-    };
-  }
-
   const mobius::ConformalMapResult result =
     mobius::ComputeSphericalConformalMap(points, triangles, parameters);
   if (!result.Success)
   {
     if (!this->GetAbortExecute())
     {
-      vtkErrorMacro(<< "Conformal map failed: " << result.Message
-                    << (centeringError.empty() ? "" : " (centering: " + centeringError + ")")
-                    << ".");
+      vtkErrorMacro(<< "Conformal map failed: " << result.Message << ".");
     }
     return 0;
   }

@@ -103,7 +103,7 @@ void ForEachEdge(const std::vector<HalfEdge>& halfEdges, Visitor visit)
 // Boundary loops as vertex sequences, following each boundary edge in its triangle's
 // direction. `closed` tells whether the chain came back to its start (it does not when the
 // orientation is inconsistent or a vertex has more outgoing than incoming boundary edges).
-void TraceBoundaryLoops(const std::vector<HalfEdge>& halfEdges, const Triangles& triangles,
+void TraceBoundaryLoops(const std::vector<HalfEdge>& halfEdges,
   std::vector<std::vector<Index>>& loops, std::vector<char>& closed)
 {
   // Directed boundary edges from -> to, looked up by their start.
@@ -117,7 +117,6 @@ void TraceBoundaryLoops(const std::vector<HalfEdge>& halfEdges, const Triangles&
       ++count;
     }
   });
-  (void)triangles;
   // Start chains at vertices with more outgoing than incoming edges first, so that open
   // chains are traced from their beginning; then the rest, which are cycles.
   std::unordered_map<Index, Index> balance;
@@ -313,7 +312,7 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
 
   std::vector<std::vector<Index>> loops;
   std::vector<char> closed;
-  TraceBoundaryLoops(halfEdges, triangles, loops, closed);
+  TraceBoundaryLoops(halfEdges, loops, closed);
   report.BoundaryLoops = static_cast<Index>(loops.size());
 
   // Components of the vertices joined by valid triangles.
@@ -577,7 +576,7 @@ Index FillHoles(Points& points, Triangles& triangles, MeshProvenance* provenance
   const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
   std::vector<std::vector<Index>> loops;
   std::vector<char> closed;
-  TraceBoundaryLoops(halfEdges, triangles, loops, closed);
+  TraceBoundaryLoops(halfEdges, loops, closed);
 
   std::vector<Eigen::Vector3d> newPoints;
   std::vector<std::array<Index, 3>> newTriangles;

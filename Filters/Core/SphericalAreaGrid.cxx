@@ -263,7 +263,9 @@ private:
 
   bool AddGeneral(const Vertex& a, const Vertex& b, const Vertex& c, double area)
   {
-    const double det = a.X.dot(b.X.cross(c.X));
+    // det(a, b, c) written with edge vectors: a.(b x c) cancels catastrophically for tiny
+    // triangles on the unit sphere and can get the orientation wrong.
+    const double det = a.X.dot((b.X - a.X).cross(c.X - a.X));
     if (!(det != 0.0))
     {
       return false;

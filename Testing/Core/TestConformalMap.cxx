@@ -1,0 +1,262 @@
+// Spherical conformal map (conformalized mean curvature flow) on generated meshes: a sphere
+// must map to itself, an ellipsoid and a sphere with needle triangles must map without folds
+// and with small quasi-conformal distortion, bad inputs must fail with a precise message.
+#include "ConformalMap.h"
+#include "CoreTest.h"
+#include "Icosphere.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+using namespace mobius;
+
+namespace
+{
+bool Contains(const std::string& text, const std::string& part)
+{
+  const bool found = text.find(part) != std::string::npos;
+  if (!found)
+  {
+    std::cerr << "message \"" << text << "\" lacks \"" << part << "\"" << std::endl;
+  }
+  return found;
+}
+
+bool AllOnUnitSphere(const Points& x)
+{
+  for (Index i = 0; i < x.rows(); ++i)
+  {
+    if (!x.row(i).allFinite() || std::abs(x.row(i).norm() - 1.0) > 1e-12)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Largest distance between the map and the best rotation of `reference` onto it (Kabsch).
+double DistanceUpToRotation(const Points& map, const Points& reference)
+{
+  const Eigen::Matrix3d covariance = reference.transpose() * map;
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() > 0 ? 1.0 : -1.0;
+  const Eigen::Matrix3d rotation = svd.matrixU() * d * svd.matrixV().transpose();
+  return ((reference * rotation) - map).rowwise().norm().maxCoeff();
+}
+
+void TestSphereMapsToItself()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(3, p, t);
+  // Scale and move it: the map must not care.
+  const Points input = (2.5 * p).rowwise() + Eigen::RowVector3d(1, -2, 3);
+  const ConformalMapResult r = ComputeSphericalConformalMap(input, t);
+  MOBIUS_CHECK(r.Success);
+  MOBIUS_CHECK(r.Converged);
+  MOBIUS_CHECK(r.SpherePoints.rows() == p.rows());
+  MOBIUS_CHECK(AllOnUnitSphere(r.SpherePoints));
+  MOBIUS_CHECK(!r.Reflected);
+  MOBIUS_CHECK(r.Distortion.FlippedTriangles == 0);
+  MOBIUS_CHECK_NEAR(r.Distortion.MeanQuasiConformal, 1.0, 2e-3);
+  MOBIUS_CHECK(DistanceUpToRotation(r.SpherePoints, p) < 5e-3);
+}
+
+// Ellipsoid with axes 1, 1.6, 0.7 from a subdivided icosahedron.
+void MakeEllipsoid(int levels, Points& p, Triangles& t)
+{
+  MakeIcosphere(levels, p, t);
+  p.col(1) *= 1.6;
+  p.col(2) *= 0.7;
+}
+
+void TestEllipsoid()
+{
+  // The flat triangles' map is the linear interpolant of a smooth conformal map, so its
+  // quasi-conformal distortion is 1 + O(h): it must halve roughly with each subdivision
+  // (measured 1.054 at level 3, 1.026 at level 4, 1.013 at level 5).
+  Points p;
+  Triangles t;
+  MakeEllipsoid(3, p, t);
+  const ConformalMapResult coarse = ComputeSphericalConformalMap(p, t);
+  MOBIUS_CHECK(coarse.Success);
+  MOBIUS_CHECK(coarse.Distortion.FlippedTriangles == 0);
+  MakeEllipsoid(4, p, t);
+  ConformalMapResult r = ComputeSphericalConformalMap(p, t);
+  MOBIUS_CHECK(r.Success);
+  MOBIUS_CHECK(r.Converged);
+  MOBIUS_CHECK(r.Iterations < ConformalMapParameters().MaximumNumberOfIterations);
+  MOBIUS_CHECK(r.RelativeChange <= ConformalMapParameters().ConvergenceTolerance);
+  MOBIUS_CHECK(AllOnUnitSphere(r.SpherePoints));
+  MOBIUS_CHECK(r.Distortion.FlippedTriangles == 0);
+  MOBIUS_CHECK(r.Distortion.MeanQuasiConformal < 1.03);
+  MOBIUS_CHECK(r.Distortion.MaxQuasiConformal < 1.06);
+  MOBIUS_CHECK(r.Distortion.MeanQuasiConformal - 1.0 <
+    0.6 * (coarse.Distortion.MeanQuasiConformal - 1.0));
+  // An ellipsoid is not a sphere: the map must squeeze the long axis' ends (about 0.24)
+  // and stretch the flat sides (about 1.8), and not wildly more.
+  MOBIUS_CHECK(r.Distortion.MinAreaRatio > 0.15 && r.Distortion.MinAreaRatio < 0.35);
+  MOBIUS_CHECK(r.Distortion.MaxAreaRatio > 1.5 && r.Distortion.MaxAreaRatio < 2.2);
+
+  // The mirrored ellipsoid (triangles facing inward) maps to outward-facing triangles.
+  Triangles inward = t;
+  inward.col(1).swap(inward.col(2));
+  r = ComputeSphericalConformalMap(p, inward);
+  MOBIUS_CHECK(r.Success);
+  MOBIUS_CHECK(r.Reflected);
+  MOBIUS_CHECK(r.Distortion.FlippedTriangles == 0);
+  MOBIUS_CHECK(r.Distortion.MeanQuasiConformal < 1.03);
+}
+
+// An icosphere where many triangles get a point inserted at 1e-4 of the way from a corner to
+// the opposite edge: the two thin triangles have angles near 0.005 degrees, whose cotangent
+// weights (about 1e4, and negative across from the obtuse angle) break a plain Laplacian.
+void TestNeedleTriangles()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(3, p, t);
+  const Index original = t.rows();
+  const Index needles = original / 3;
+  Points q(p.rows() + needles, 3);
+  q.topRows(p.rows()) = p;
+  Triangles s(original + 2 * needles, 3);
+  s.topRows(original) = t;
+  for (Index k = 0; k < needles; ++k)
+  {
+    const Index f = 3 * k;
+    const Index a = t(f, 0), b = t(f, 1), c = t(f, 2);
+    const Index m = p.rows() + k;
+    q.row(m) = (1.0 - 1e-4) * p.row(a) + 0.5e-4 * (p.row(b) + p.row(c));
+    s.row(f) << a, b, m;
+    s.row(original + 2 * k) << b, c, m;
+    s.row(original + 2 * k + 1) << c, a, m;
+  }
+  for (bool intrinsic : { true, false })
+  {
+    ConformalMapParameters parameters;
+    parameters.IntrinsicDelaunay = intrinsic;
+    const ConformalMapResult r = ComputeSphericalConformalMap(q, s, parameters);
+    MOBIUS_CHECK(r.Success);
+    MOBIUS_CHECK(AllOnUnitSphere(r.SpherePoints));
+    MOBIUS_CHECK(r.Distortion.FlippedTriangles == 0);
+    MOBIUS_CHECK(std::isfinite(r.Distortion.MaxQuasiConformal));
+    if (intrinsic)
+    {
+      MOBIUS_CHECK(r.IntrinsicFlips >= needles); // each needle's long edge is flipped
+      MOBIUS_CHECK(r.Distortion.MeanQuasiConformal < 1.05);
+    }
+  }
+}
+
+void TestInvalidInputs()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(2, p, t);
+
+  // A hole.
+  Triangles holed = t.topRows(t.rows() - 1);
+  ConformalMapResult r = ComputeSphericalConformalMap(p, holed);
+  MOBIUS_CHECK(!r.Success);
+  MOBIUS_CHECK(r.SpherePoints.rows() == 0);
+  MOBIUS_CHECK(Contains(r.Message, "1 boundary loop (holes)"));
+
+  // A NaN coordinate.
+  Points bad = p;
+  bad(7, 0) = std::numeric_limits<double>::quiet_NaN();
+  r = ComputeSphericalConformalMap(bad, t);
+  MOBIUS_CHECK(!r.Success);
+  MOBIUS_CHECK(Contains(r.Message, "NaN"));
+
+  // Two coincident points joined by an edge (a zero-length edge).
+  bad = p;
+  bad.row(t(0, 1)) = bad.row(t(0, 0));
+  r = ComputeSphericalConformalMap(bad, t);
+  MOBIUS_CHECK(!r.Success);
+  MOBIUS_CHECK(Contains(r.Message, "zero-length edge") || Contains(r.Message, "zero-area"));
+
+  // A torus: genus 1.
+  const int n = 16, m = 8;
+  const double pi = std::acos(-1.0);
+  Points torus(n * m, 3);
+  Triangles torusT(2 * n * m, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const double u = 2 * pi * i / n, v = 2 * pi * j / m;
+      torus.row(i * m + j) << (2 + 0.6 * std::cos(v)) * std::cos(u),
+        (2 + 0.6 * std::cos(v)) * std::sin(u), 0.6 * std::sin(v);
+      const Index a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
+                  d = i * m + (j + 1) % m;
+      torusT.row(2 * (i * m + j)) << a, b, c;
+      torusT.row(2 * (i * m + j) + 1) << a, c, d;
+    }
+  }
+  r = ComputeSphericalConformalMap(torus, torusT);
+  MOBIUS_CHECK(!r.Success);
+  MOBIUS_CHECK(Contains(r.Message, "genus 1"));
+
+  // Parameters.
+  ConformalMapParameters parameters;
+  parameters.TimeStep = -1.0;
+  MOBIUS_CHECK(!ComputeSphericalConformalMap(p, t, parameters).Success);
+  parameters = ConformalMapParameters();
+  parameters.MaximumNumberOfIterations = 0;
+  MOBIUS_CHECK(!ComputeSphericalConformalMap(p, t, parameters).Success);
+}
+
+void TestHooksAndAbort()
+{
+  Points p;
+  Triangles t;
+  MakeEllipsoid(2, p, t);
+  ConformalMapParameters parameters;
+  int calls = 0;
+  parameters.BetweenSteps = [&calls](Points&, int iteration) {
+    ++calls;
+    return iteration == calls; // called once per step, in order
+  };
+  double lastProgress = 0.0;
+  parameters.Progress = [&lastProgress](double progress) {
+    lastProgress = progress;
+    return true;
+  };
+  ConformalMapResult r = ComputeSphericalConformalMap(p, t, parameters);
+  MOBIUS_CHECK(r.Success);
+  MOBIUS_CHECK(calls == r.Iterations);
+  MOBIUS_CHECK(lastProgress > 0.0 && lastProgress <= 1.0);
+
+  // Abort from the progress callback after the second step.
+  parameters.BetweenSteps = FlowStepHook();
+  parameters.Progress = [](double progress) { return progress < 0.015; };
+  r = ComputeSphericalConformalMap(p, t, parameters);
+  MOBIUS_CHECK(!r.Success);
+  MOBIUS_CHECK(Contains(r.Message, "aborted"));
+  MOBIUS_CHECK(r.SpherePoints.rows() == 0);
+
+  // A fixed number of steps: tolerance 0 never converges.
+  parameters = ConformalMapParameters();
+  parameters.ConvergenceTolerance = 0.0;
+  parameters.MaximumNumberOfIterations = 5;
+  r = ComputeSphericalConformalMap(p, t, parameters);
+  MOBIUS_CHECK(r.Success);
+  MOBIUS_CHECK(!r.Converged);
+  MOBIUS_CHECK(r.Iterations == 5);
+}
+}
+
+int main()
+{
+  TestSphereMapsToItself();
+  TestEllipsoid();
+  TestNeedleTriangles();
+  TestInvalidInputs();
+  TestHooksAndAbort();
+  return MOBIUS_TEST_RESULT();
+}

@@ -1,0 +1,284 @@
+// Topology analysis and repairs on generated meshes whose answers are known by construction.
+#include "CoreTest.h"
+#include "Icosphere.h"
+#include "MeshTopology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace mobius;
+
+namespace
+{
+// An n x m grid on the torus with radii 2 and 0.5, both directions wrapped: genus 1.
+void MakeTorus(int n, int m, Points& points, Triangles& triangles)
+{
+  points.resize(n * m, 3);
+  triangles.resize(2 * n * m, 3);
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      const double u = 2 * pi * i / n, v = 2 * pi * j / m;
+      points.row(i * m + j) << (2 + 0.5 * std::cos(v)) * std::cos(u),
+        (2 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v);
+      const Index a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
+                  d = i * m + (j + 1) % m;
+      triangles.row(2 * (i * m + j)) << a, b, c;
+      triangles.row(2 * (i * m + j) + 1) << a, c, d;
+    }
+  }
+}
+
+Triangles WithoutRows(const Triangles& triangles, const std::vector<Index>& drop)
+{
+  Triangles kept(triangles.rows() - static_cast<Index>(drop.size()), 3);
+  Index k = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (std::find(drop.begin(), drop.end(), t) == drop.end())
+    {
+      kept.row(k++) = triangles.row(t);
+    }
+  }
+  return kept;
+}
+
+void TestSphereAndTorus()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(2, p, t);
+  const MeshTopologyReport sphere = AnalyzeMeshTopology(p, t);
+  MOBIUS_CHECK(sphere.IsTopologicalSphere());
+  MOBIUS_CHECK(sphere.EulerCharacteristic == 2);
+  MOBIUS_CHECK(sphere.Genus == 0);
+  MOBIUS_CHECK(sphere.Edges == 3 * t.rows() / 2);
+  MOBIUS_CHECK(DescribeTopologyProblems(sphere).empty());
+
+  MakeTorus(12, 8, p, t);
+  const MeshTopologyReport torus = AnalyzeMeshTopology(p, t);
+  MOBIUS_CHECK(torus.IsClosedManifold());
+  MOBIUS_CHECK(torus.EulerCharacteristic == 0);
+  MOBIUS_CHECK(torus.Genus == 1);
+  MOBIUS_CHECK(!torus.IsTopologicalSphere());
+  MOBIUS_CHECK(DescribeTopologyProblems(torus).find("genus 1") != std::string::npos);
+}
+
+void TestHolesAndFilling()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(2, p, t);
+  // Two triangles far apart: two holes of three edges each.
+  Index far = -1;
+  for (Index s = 0; s < t.rows() && far < 0; ++s)
+  {
+    if (p.row(t(s, 0)).dot(p.row(t(0, 0))) < -0.9)
+    {
+      far = s;
+    }
+  }
+  Triangles holed = WithoutRows(t, { 0, far });
+  MeshTopologyReport r = AnalyzeMeshTopology(p, holed);
+  MOBIUS_CHECK(r.BoundaryLoops == 2);
+  MOBIUS_CHECK(r.BoundaryEdges == 6);
+  MOBIUS_CHECK(r.Genus == -1);
+  MOBIUS_CHECK(DescribeTopologyProblems(r).find("2 boundary loops") != std::string::npos);
+  MeshProvenance provenance;
+  MOBIUS_CHECK(FillHoles(p, holed, &provenance) == 2);
+  MOBIUS_CHECK(holed.rows() == t.rows()); // three-edge loops get one triangle, no new point
+  MOBIUS_CHECK(AnalyzeMeshTopology(p, holed).IsTopologicalSphere());
+
+  // Remove the fan of vertex 0 (degree 5 on an icosphere): one loop of five edges.
+  MakeIcosphere(2, p, t);
+  std::vector<Index> fan;
+  for (Index s = 0; s < t.rows(); ++s)
+  {
+    if (t(s, 0) == 0 || t(s, 1) == 0 || t(s, 2) == 0)
+    {
+      fan.push_back(s);
+    }
+  }
+  MOBIUS_CHECK(fan.size() == 5);
+  holed = WithoutRows(t, fan);
+  r = AnalyzeMeshTopology(p, holed);
+  MOBIUS_CHECK(r.BoundaryLoops == 1);
+  MOBIUS_CHECK(r.BoundaryEdges == 5);
+  MOBIUS_CHECK(r.UnusedPoints == 1);
+  const Index pointsBefore = p.rows();
+  MOBIUS_CHECK(FillHoles(p, holed, &provenance) == 1);
+  MOBIUS_CHECK(p.rows() == pointsBefore + 1); // the fan's center
+  MOBIUS_CHECK(provenance.PointSource.back() == -1);
+  MOBIUS_CHECK(provenance.TriangleSource.back() == -1);
+  r = AnalyzeMeshTopology(p, holed);
+  MOBIUS_CHECK(r.IsClosedManifold() && r.InconsistentlyOrientedEdges == 0);
+  ExtractLargestComponent(p, holed); // drops the now unused vertex 0
+  MOBIUS_CHECK(AnalyzeMeshTopology(p, holed).IsTopologicalSphere());
+}
+
+void TestSoup()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(1, p, t);
+  const Index originalPoints = p.rows();
+  // Every triangle with its own three points, plus one triangle that becomes degenerate.
+  Points soup(3 * t.rows() + 3, 3);
+  Triangles soupTriangles(t.rows() + 1, 3);
+  for (Index s = 0; s < t.rows(); ++s)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      soup.row(3 * s + k) = p.row(t(s, k));
+      soupTriangles(s, k) = 3 * s + k;
+    }
+  }
+  const Index last = 3 * t.rows();
+  soup.row(last) = p.row(0);
+  soup.row(last + 1) = p.row(1);
+  soup.row(last + 2) = p.row(0);
+  soupTriangles.row(t.rows()) << last, last + 1, last + 2;
+  MeshTopologyReport r = AnalyzeMeshTopology(soup, soupTriangles);
+  MOBIUS_CHECK(r.BoundaryEdges > 0);
+  MOBIUS_CHECK(r.DuplicatePoints == soup.rows() - originalPoints);
+  MOBIUS_CHECK(DescribeTopologyProblems(r).find("duplicates") != std::string::npos);
+  const MeshProvenance provenance = MergeDuplicatePoints(soup, soupTriangles);
+  MOBIUS_CHECK(soup.rows() == originalPoints);
+  MOBIUS_CHECK(soupTriangles.rows() == t.rows()); // the degenerate one was dropped
+  MOBIUS_CHECK(provenance.TriangleSource.back() == t.rows() - 1);
+  r = AnalyzeMeshTopology(soup, soupTriangles);
+  MOBIUS_CHECK(r.IsTopologicalSphere());
+  MOBIUS_CHECK(r.DuplicatePoints == 0);
+}
+
+void TestNonManifold()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(1, p, t);
+  // A fin on edge (t(0,0), t(0,1)): three triangles on that edge.
+  Points fin(p.rows() + 1, 3);
+  fin << p, Eigen::RowVector3d(3, 3, 3);
+  Triangles finTriangles(t.rows() + 1, 3);
+  finTriangles << t, Eigen::Matrix<Index, 1, 3>(t(0, 0), t(0, 1), p.rows());
+  MeshTopologyReport r = AnalyzeMeshTopology(fin, finTriangles);
+  MOBIUS_CHECK(r.NonManifoldEdges == 1);
+  MOBIUS_CHECK(r.BoundaryEdges == 2);
+  MOBIUS_CHECK(!OrientConsistently(finTriangles));
+
+  // Two tetrahedra touching at one vertex: manifold edges, one non-manifold vertex.
+  Points bow(7, 3);
+  bow << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1;
+  Triangles bowTriangles(8, 3);
+  bowTriangles << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 4, 5, 0, 6, 4, 0, 5, 6, 4, 6, 5;
+  r = AnalyzeMeshTopology(bow, bowTriangles);
+  MOBIUS_CHECK(r.NonManifoldEdges == 0);
+  MOBIUS_CHECK(r.NonManifoldVertices == 1);
+  MOBIUS_CHECK(r.ConnectedComponents == 1);
+  MOBIUS_CHECK(!r.IsTopologicalSphere());
+}
+
+void TestComponentsAndOrientation()
+{
+  Points small, large;
+  Triangles smallT, largeT;
+  MakeIcosphere(1, small, smallT);
+  MakeIcosphere(2, large, largeT);
+  Points both(small.rows() + large.rows(), 3);
+  both << small, (large.array() + 5.0).matrix();
+  Triangles bothT(smallT.rows() + largeT.rows(), 3);
+  bothT << smallT, (largeT.array() + small.rows()).matrix();
+  MOBIUS_CHECK(AnalyzeMeshTopology(both, bothT).ConnectedComponents == 2);
+  const MeshProvenance provenance = ExtractLargestComponent(both, bothT);
+  MOBIUS_CHECK(both.rows() == large.rows());
+  MOBIUS_CHECK(bothT.rows() == largeT.rows());
+  MOBIUS_CHECK(provenance.PointSource[0] == small.rows()); // first point of the large sphere
+  MOBIUS_CHECK_NEAR(both(0, 0), large(0, 0) + 5.0, 0.0);
+  MOBIUS_CHECK(AnalyzeMeshTopology(both, bothT).IsTopologicalSphere());
+
+  // Reverse three triangles: their edges disagree with the neighbours; orienting fixes it.
+  Triangles t = largeT;
+  for (Index s : { 3, 17, 40 })
+  {
+    std::swap(t(s, 1), t(s, 2));
+  }
+  MOBIUS_CHECK(AnalyzeMeshTopology(large, t).InconsistentlyOrientedEdges == 9);
+  Index reversed = -1;
+  MOBIUS_CHECK(OrientConsistently(t, &reversed));
+  MOBIUS_CHECK(reversed == 3);
+  MOBIUS_CHECK(t == largeT);
+
+  // A Moebius strip cannot be oriented.
+  const int n = 9;
+  const double pi = std::acos(-1.0);
+  Points strip(2 * n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    const double u = 2 * pi * i / n;
+    for (int s = 0; s < 2; ++s)
+    {
+      const double w = s == 0 ? -0.3 : 0.3;
+      strip.row(2 * i + s) << (1 + w * std::cos(u / 2)) * std::cos(u),
+        (1 + w * std::cos(u / 2)) * std::sin(u), w * std::sin(u / 2);
+    }
+  }
+  Triangles stripT(2 * n, 3);
+  for (int i = 0; i < n; ++i)
+  {
+    const Index a = 2 * i, b = 2 * i + 1;
+    // The last quad connects with a half twist: bottom of i meets top of 0.
+    const Index c = i + 1 < n ? 2 * (i + 1) : 1, d = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    stripT.row(2 * i) << a, c, b;
+    stripT.row(2 * i + 1) << b, c, d;
+  }
+  const Triangles before = stripT;
+  MOBIUS_CHECK(!OrientConsistently(stripT));
+  MOBIUS_CHECK(stripT == before);
+  // Its one boundary curve has 2n edges (it goes around twice).
+  MOBIUS_CHECK(AnalyzeMeshTopology(strip, stripT).BoundaryEdges == 2 * n);
+}
+
+void TestBadValues()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(1, p, t);
+  p(4, 1) = std::numeric_limits<double>::quiet_NaN();
+  MeshTopologyReport r = AnalyzeMeshTopology(p, t);
+  MOBIUS_CHECK(r.NonFinitePoints == 1);
+  MOBIUS_CHECK(!r.IsTopologicalSphere());
+  MOBIUS_CHECK(DescribeTopologyProblems(r).find("NaN") != std::string::npos);
+
+  MakeIcosphere(1, p, t);
+  t(5, 2) = p.rows(); // out of range
+  t(6, 2) = t(6, 0);  // repeated point
+  r = AnalyzeMeshTopology(p, t);
+  MOBIUS_CHECK(r.InvalidTriangles == 1);
+  MOBIUS_CHECK(r.RepeatedVertexTriangles == 1);
+
+  // Collinear points: no area.
+  Points line(3, 3);
+  line << 0, 0, 0, 1, 0, 0, 2, 0, 0;
+  Triangles one(1, 3);
+  one << 0, 1, 2;
+  r = AnalyzeMeshTopology(line, one);
+  MOBIUS_CHECK(r.ZeroAreaTriangles == 1);
+  MOBIUS_CHECK(r.BoundaryLoops == 1);
+}
+}
+
+int main()
+{
+  TestSphereAndTorus();
+  TestHolesAndFilling();
+  TestSoup();
+  TestNonManifold();
+  TestComponentsAndOrientation();
+  TestBadValues();
+  return MOBIUS_TEST_RESULT();
+}

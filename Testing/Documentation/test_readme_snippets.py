@@ -1,0 +1,39 @@
+"""Runs the README's code blocks as a user would, from a folder where `build` is the build
+tree: blocks tagged `sh` with bash, `python` with Debian's python3 (the package folder on
+PYTHONPATH, as the README says), `pvpython` with pvpython. Blocks tagged `shell` (the setup
+commands, which CI itself runs, and starting the GUI) and `c++` (a fragment) are not run."""
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+readme, build, pvpython, work = sys.argv[1:5]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+os.symlink(build, os.path.join(work, "build"))
+
+text = open(readme).read()
+blocks = re.findall(r"^```(\S*)\n(.*?)^```", text, flags=re.M | re.S)
+runners = {
+    "sh": ["bash", "-e"],
+    "python": ["/usr/bin/python3"],
+    "pvpython": [pvpython, "--force-offscreen-rendering"],
+}
+env = dict(os.environ, PYTHONPATH=os.path.join(build, "lib/python3/dist-packages"))
+failures, ran = 0, 0
+for number, (language, code) in enumerate(blocks):
+    if language not in runners:
+        continue
+    script = os.path.join(work, f"snippet{number}.{language}")
+    with open(script, "w") as f:
+        f.write(code)
+    result = subprocess.run(runners[language] + [script], cwd=work, env=env, capture_output=True, text=True)
+    ran += 1
+    status = "ok" if result.returncode == 0 else f"FAILED ({result.returncode})"
+    print(f"README block {number} ({language}): {status}")
+    if result.returncode != 0:
+        failures += 1
+        print(code, result.stdout[-2000:], result.stderr[-2000:], sep="\n")
+print(f"{ran - failures} passed, {failures} failed")
+sys.exit(1 if failures or ran < 3 else 0)
