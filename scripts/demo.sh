@@ -7,4 +7,4 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MOBIUS_BUILD_DIR:-$root/build}"
 "$root/scripts/setup.sh"
-xvfb-run -a -s "-screen 0 1280x1024x24" "$build/bin/mobius-register" "$@"
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$build/bin/mobius-register" "$@"
