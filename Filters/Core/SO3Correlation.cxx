@@ -523,14 +523,14 @@ void PolishPeaks(const SphericalHarmonicCoefficients& source,
     }
   }
 }
-}
 
-int ChooseCorrelationBandwidth(const SphericalHarmonicCoefficients& source,
-  const SphericalHarmonicCoefficients& target, double tolerance, int minimum, int maximum)
+// |f_l| |g_l| per band l < B (|f_l| the norm of band l's coefficients) and their sum: by
+// Cauchy-Schwarz, band l changes the correlation anywhere by at most this product.
+std::vector<double> BandNormProducts(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, int B, double& total)
 {
-  const int B = std::min(source.Bandwidth, target.Bandwidth);
   std::vector<double> product(B);
-  double total = 0;
+  total = 0;
   for (int l = 0; l < B; ++l)
   {
     double f = 0;
@@ -543,6 +543,16 @@ int ChooseCorrelationBandwidth(const SphericalHarmonicCoefficients& source,
     product[l] = std::sqrt(f * g);
     total += product[l];
   }
+  return product;
+}
+}
+
+int ChooseCorrelationBandwidth(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, double tolerance, int minimum, int maximum)
+{
+  const int B = std::min(source.Bandwidth, target.Bandwidth);
+  double total = 0;
+  const std::vector<double> product = BandNormProducts(source, target, B, total);
   int bandwidth = B;
   double tail = 0;
   while (bandwidth > 1 && tail + product[bandwidth - 1] <= tolerance * total)
@@ -568,20 +578,8 @@ int ChooseRefinementBandwidth(const SphericalHarmonicCoefficients& source,
   {
     return B;
   }
-  std::vector<double> product(B);
   double total = 0;
-  for (int l = 0; l < B; ++l)
-  {
-    double f = 0;
-    double g = 0;
-    for (int m = -l; m <= l; ++m)
-    {
-      f += std::norm(source(l, m));
-      g += std::norm(target(l, m));
-    }
-    product[l] = std::sqrt(f * g);
-    total += product[l];
-  }
+  const std::vector<double> product = BandNormProducts(source, target, B, total);
   int bandwidth = B;
   double tail = 0;
   while (bandwidth > 1)
