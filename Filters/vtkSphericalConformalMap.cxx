@@ -1,6 +1,7 @@
 #include "vtkSphericalConformalMap.h"
 
 #include "ConformalMap.h"
+#include "MapDistortion.h"
 #include "MeshTopology.h"
 #include "vtkSphericalMapData.h"
 
@@ -267,7 +268,9 @@ int vtkSphericalConformalMap::RequestData(
   parameters.TimeStep = this->TimeStep;
   parameters.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
   parameters.ConvergenceTolerance = this->ConvergenceTolerance;
-  parameters.IntrinsicDelaunay = this->IntrinsicDelaunay;
+  parameters.IntrinsicDelaunay = this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_ON ||
+    (this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_AUTOMATIC &&
+      mobius::SmallestTriangleAngleDegrees(points, triangles) < this->IntrinsicDelaunayAngle);
   parameters.FlipRepairPasses = this->FlipRepairPasses;
   parameters.MobiusCentering = this->CenterBetweenSteps;
   parameters.Progress = [this](double fraction) {
@@ -344,6 +347,7 @@ int vtkSphericalConformalMap::RequestData(
   SetFieldValue(fieldData, "MaxQuasiConformalDistortion", result.Distortion.MaxQuasiConformal);
   const double areaRange[2] = { result.Distortion.MinAreaRatio, result.Distortion.MaxAreaRatio };
   mobius::vtk::SetFieldValues(fieldData, "AreaDistortionRange", areaRange, 2);
+  SetFieldValue(fieldData, "IntrinsicDelaunayUsed", parameters.IntrinsicDelaunay ? 1 : 0);
   SetFieldValue(fieldData, "IntrinsicDelaunayFlips", static_cast<double>(result.IntrinsicFlips));
   SetFieldValue(fieldData, "MergedDuplicatePoints", static_cast<double>(duplicates));
   SetFieldValue(fieldData, "FilledHoles", static_cast<double>(filledHoles));
@@ -363,6 +367,7 @@ void vtkSphericalConformalMap::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "CenterBetweenSteps: " << this->CenterBetweenSteps << "\n";
   os << indent << "IntrinsicDelaunay: " << this->IntrinsicDelaunay << "\n";
+  os << indent << "IntrinsicDelaunayAngle: " << this->IntrinsicDelaunayAngle << "\n";
   os << indent << "FlipRepairPasses: " << this->FlipRepairPasses << "\n";
   os << indent << "FillHoles: " << this->FillHoles << "\n";
   os << indent << "KeepLargestComponent: " << this->KeepLargestComponent << "\n";

@@ -66,9 +66,13 @@ public:
   ///@{
   /**
    * What a cell holds: the area ratio lambda (AREA_RATIO) or sqrt(lambda)
-   * (SQUARE_ROOT_AREA_RATIO, the default: its squared L2 norm is the surface area, so
-   * correlations of two signals compare like with like and large area ratios in squeezed
-   * limbs do not dominate).
+   * (SQUARE_ROOT_AREA_RATIO, the default). With sqrt(lambda) the signal's squared L2 norm
+   * is the surface area, and the huge ratios of squeezed limbs weigh less in the
+   * correlation. Measured with vtkSO3Register at N = 256: a rotated copy of a real map
+   * comes back within 0.008 / 0.19 / 0.22 / 0.07 degrees (hand, camel, man, armadillo;
+   * worst of 4 rotations) with sqrt(lambda) against 0.06 / 0.50 / 0.76 / 0.26 degrees with
+   * lambda, and on the SMPL man -> woman pair 51% of the vertices land within
+   * 0.1 sqrt(area) of their counterpart against 37%.
    */
   vtkSetClampMacro(ValueMode, int, AREA_RATIO, SQUARE_ROOT_AREA_RATIO);
   vtkGetMacro(ValueMode, int);

@@ -104,4 +104,21 @@ MapDistortion MeasureMapDistortion(
   }
   return d;
 }
+
+double SmallestTriangleAngleDegrees(const Points& points, const Triangles& triangles)
+{
+  double smallest = M_PI;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d apex = points.row(triangles(t, k));
+      const Eigen::Vector3d u = Eigen::Vector3d(points.row(triangles(t, (k + 1) % 3))) - apex;
+      const Eigen::Vector3d v = Eigen::Vector3d(points.row(triangles(t, (k + 2) % 3))) - apex;
+      // atan2 of |u x v| and u.v stays accurate for tiny angles, unlike acos.
+      smallest = std::min(smallest, std::atan2(u.cross(v).norm(), u.dot(v)));
+    }
+  }
+  return smallest * 180.0 / M_PI;
+}
 }

@@ -31,6 +31,10 @@ double SignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Ei
 /// Distortion of the map original[i] -> mapped[i] over the triangles. Original triangles
 /// with no area are skipped (they have no defined distortion). `mapped` is taken to be
 /// centered at the origin for the flip count (true of a spherical map).
+/// The smallest interior angle of any triangle, in degrees (180 for no triangles; degenerate
+/// triangles count as 0). Needle triangles make cotangent weights extreme.
+double SmallestTriangleAngleDegrees(const Points& points, const Triangles& triangles);
+
 MapDistortion MeasureMapDistortion(
   const Points& original, const Points& mapped, const Triangles& triangles);
 
