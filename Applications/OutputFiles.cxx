@@ -21,6 +21,13 @@ bool Exists(const std::string& path)
   return stat(path.c_str(), &info) == 0;
 }
 
+bool SameFile(const std::string& a, const std::string& b)
+{
+  struct stat first, second;
+  return stat(a.c_str(), &first) == 0 && stat(b.c_str(), &second) == 0 &&
+    first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+}
+
 std::string Folder(const std::string& path)
 {
   const auto slash = path.find_last_of('/');
@@ -41,8 +48,8 @@ std::string OutputFiles::Temporary(const std::string& path) const
   return path + ".partial-" + std::to_string(getpid());
 }
 
-bool OutputFiles::Plan(
-  const std::string& output, const std::string& picture, bool force, std::string& error)
+bool OutputFiles::Plan(const std::string& output, const std::string& picture, bool force,
+  const std::vector<std::string>& inputs, std::string& error)
 {
   std::string stem = output;
   if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".vtp") == 0)
@@ -62,6 +69,14 @@ bool OutputFiles::Plan(
     {
       error = path + ": the folder " + Folder(path) + " does not exist";
       return false;
+    }
+    for (const auto& input : inputs)
+    {
+      if (SameFile(path, input))
+      {
+        error = path + ": is an input mesh; choose another output name";
+        return false;
+      }
     }
     if (Exists(path) && !force)
     {

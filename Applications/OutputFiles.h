@@ -15,8 +15,10 @@ public:
   ~OutputFiles();
 
   /// Decides the paths from -o (a prefix, or a .vtp path) and --png; fails if a file
-  /// exists and `force` is off, or if the folder does not exist.
-  bool Plan(const std::string& output, const std::string& picture, bool force, std::string& error);
+  /// exists and `force` is off, if the folder does not exist, or if an output would
+  /// replace one of `inputs` (never allowed, even with `force`).
+  bool Plan(const std::string& output, const std::string& picture, bool force,
+    const std::vector<std::string>& inputs, std::string& error);
 
   /// The correspondence output as VTP (inline binary: Debian bookworm's expat cannot read
   /// VTK 9.2's appended data back).

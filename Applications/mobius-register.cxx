@@ -132,7 +132,8 @@ int main(int argc, char* argv[])
     }
   }
   OutputFiles outputs;
-  if (!outputs.Plan(commandLine.Output, commandLine.Picture, commandLine.Force, error))
+  if (!outputs.Plan(commandLine.Output, commandLine.Picture, commandLine.Force,
+        { commandLine.Source, commandLine.Target }, error))
   {
     return Fail(error);
   }

@@ -87,6 +87,10 @@ eight = os.path.join(mesh_dir, "eight.off")
 expect_failure([eight, hand, "-o", "out3"], [eight, "genus 2"], ["out3"])
 expect_failure([hand, hand, "-o", "out4", "--resolution", "33"], ["--resolution"], ["out4"], code_expected=2)
 expect_failure([hand, hand, "-o", "out5", "--bogus"], ["unknown option --bogus"], ["out5"], code_expected=2)
+shutil.copy(hand, os.path.join(work, "mine.vtp.off"))
+code, _, err = run(hand, "mine.vtp.off", "-o", "mine.vtp.off", "--png", "mine.vtp.off", "--force")
+check(code == 1 and "is an input mesh" in err, f"output onto an input: {code} {err}")
+check(os.path.getsize(os.path.join(work, "mine.vtp.off")) == os.path.getsize(hand), "input kept")
 no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
 expect_failure([hand, hand, "-o", "out6", "--png", "out6.png", "--resolution", "32"],
                ["out6.png", "X display"], ["out6"], env=no_display)
