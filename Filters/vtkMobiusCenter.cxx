@@ -1,5 +1,6 @@
 #include "vtkMobiusCenter.h"
 
+#include "GeneralizedCentering.h"
 #include "MobiusCentering.h"
 #include "vtkSphericalMapData.h"
 
@@ -55,6 +56,31 @@ int vtkMobiusCenter::RequestData(
     }
     return 0;
   }
+  mobius::GeneralizedCenteringResult generalized;
+  if (this->Degree > 1)
+  {
+    if (triangles.rows() == 0)
+    {
+      vtkErrorMacro(<< "Cannot center: Degree " << this->Degree
+                    << " needs triangles; a point set can only be centered with Degree 1.");
+      return 0;
+    }
+    mobius::GeneralizedCenteringParameters generalParameters;
+    generalParameters.Degree = this->Degree;
+    generalParameters.Tolerance = this->Tolerance;
+    generalParameters.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+    if (!mobius::CenterWithSphericalHarmonics(
+          points, triangles, areas, generalParameters, generalized, progress))
+    {
+      if (!this->GetAbortExecute())
+      {
+        vtkErrorMacro(<< "Generalized centering failed: " << generalized.Error << ".");
+      }
+      return 0;
+    }
+    result.CenterOfMassNorm = generalized.CenterOfMassNorm;
+    result.Converged = generalized.Converged;
+  }
   if (!result.Converged)
   {
     vtkWarningMacro(<< "Centering stopped after " << result.NumberOfIterations
@@ -70,6 +96,9 @@ int vtkMobiusCenter::RequestData(
   mobius::vtk::SetFieldValue(
     fieldData, "InitialCenterOfMassNorm", result.InitialCenterOfMassNorm);
   mobius::vtk::SetFieldValue(fieldData, "CenteringIterations", result.NumberOfIterations);
+  mobius::vtk::SetFieldValue(fieldData, "CenteringDegree", this->Degree);
+  mobius::vtk::SetFieldValue(
+    fieldData, "GeneralizedCenteringIterations", generalized.NumberOfIterations);
   double lorentz[16];
   for (int r = 0; r < 4; ++r)
   {
@@ -100,4 +129,5 @@ void vtkMobiusCenter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+  os << indent << "Degree: " << this->Degree << "\n";
 }

@@ -28,6 +28,14 @@
  *   inverse transformation is diag(1,1,1,-1) L^T diag(1,1,1,-1).
  * - `InversionCenters` (k tuples of 3 doubles): the centers c of the inversions, in order.
  *
+ * Generalized centering (paper Sections 5 and 6.1): with Degree L > 1 the Möbius-centered
+ * map is then advected along gradients of spherical harmonics until the area has no
+ * component along the harmonics of degree 1 to L. The map is no longer conformal but its
+ * area is spread more evenly (the paper's Figure 5); no triangle is allowed to flip.
+ * `CenterOfMassNorm` is then the norm of all those moments, `GeneralizedCenteringIterations`
+ * counts the advection steps, and `MobiusTransform` / `InversionCenters` describe only the
+ * Möbius part.
+ *
  * Errors (vtkErrorMacro, no output): empty input, NaN/Inf coordinates, points off the unit
  * sphere, lines/strips/non-triangle polygons, missing or invalid `SurfaceArea`. If the
  * tolerance is not reached within MaximumNumberOfIterations the result is still produced
@@ -68,6 +76,15 @@ public:
   vtkGetMacro(MaximumNumberOfIterations, int);
   ///@}
 
+  ///@{
+  /**
+   * Highest spherical-harmonic degree centered against: 1 (default) is the Möbius
+   * centering; 2 to 8 add the generalized centering. Needs triangles when above 1.
+   */
+  vtkSetClampMacro(Degree, int, 1, 8);
+  vtkGetMacro(Degree, int);
+  ///@}
+
 protected:
   vtkMobiusCenter();
   ~vtkMobiusCenter() override = default;
@@ -76,6 +93,7 @@ protected:
 
   double Tolerance = 1e-10;
   int MaximumNumberOfIterations = 100;
+  int Degree = 1;
 
 private:
   vtkMobiusCenter(const vtkMobiusCenter&) = delete;

@@ -3,6 +3,8 @@
 #include "MobiusTestUtilities.h"
 #include "vtkMobiusCenter.h"
 
+#include "GeneralizedCentering.h"
+
 #include "vtkExecutive.h"
 #include "vtkIntArray.h"
 
@@ -80,6 +82,51 @@ int TestCentersAndPassesData()
   }
   MOBIUS_EXPECT(maxError < 1e-9);
   MOBIUS_EXPECT(maxRadiusError < 1e-12);
+  return failures;
+}
+
+int TestGeneralizedCentering()
+{
+  int failures = 0;
+  auto map = mobius_test::MakeSphericalMap(4, mobius_test::BumpySurface, { 0.3, -0.2, 0.1 });
+  vtkNew<vtkMobiusCenter> center;
+  center->SetInputData(map);
+  center->SetDegree(3);
+  center->Update();
+  vtkPolyData* out = center->GetOutput();
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "CenteringDegree") == 3);
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "GeneralizedCenteringIterations") >= 1);
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "CenterOfMassNorm") <= 1e-10);
+  // The moments of degree 1..3, recomputed from the output, vanish.
+  mobius::Points points(out->GetNumberOfPoints(), 3);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    points.row(i) << p[0], p[1], p[2];
+  }
+  mobius::Triangles triangles(out->GetNumberOfPolys(), 3);
+  mobius::Vector areas(out->GetNumberOfPolys());
+  for (vtkIdType t = 0; t < out->GetNumberOfPolys(); ++t)
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    out->GetCellPoints(t, npts, ids);
+    triangles.row(t) << ids[0], ids[1], ids[2];
+    areas[t] = out->GetCellData()->GetArray("SurfaceArea")->GetTuple1(t);
+  }
+  MOBIUS_EXPECT(mobius::SphericalHarmonicMoments(points, triangles, areas, 3).norm() <= 1e-10);
+
+  // A point set can only be Möbius-centered.
+  vtkNew<vtkPolyData> cloud;
+  cloud->SetPoints(map->GetPoints());
+  vtkNew<vtkMobiusCenter> pointCenter;
+  mobius_test::MessageCatcher catcher(pointCenter);
+  mobius_test::MessageCatcher executiveCatcher(pointCenter->GetExecutive());
+  pointCenter->SetInputData(cloud);
+  pointCenter->SetDegree(2);
+  pointCenter->Update();
+  MOBIUS_EXPECT(catcher.Error.find("needs triangles") != std::string::npos);
   return failures;
 }
 
@@ -178,6 +225,7 @@ int TestMobiusCenter(int, char*[])
 {
   int failures = TestCentersAndPassesData();
   failures += TestPointSet();
+  failures += TestGeneralizedCentering();
   failures += TestBadInputs();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
