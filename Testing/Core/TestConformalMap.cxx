@@ -2,6 +2,7 @@
 // must map to itself, an ellipsoid and a sphere with needle triangles must map without folds
 // and with small quasi-conformal distortion, bad inputs must fail with a precise message.
 #include "ConformalMap.h"
+#include "Torus.h"
 #include "CoreTest.h"
 #include "Icosphere.h"
 
@@ -181,23 +182,9 @@ void TestInvalidInputs()
   MOBIUS_CHECK(Contains(r.Message, "zero-length edge") || Contains(r.Message, "zero-area"));
 
   // A torus: genus 1.
-  const int n = 16, m = 8;
-  const double pi = std::acos(-1.0);
-  Points torus(n * m, 3);
-  Triangles torusT(2 * n * m, 3);
-  for (int i = 0; i < n; ++i)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      const double u = 2 * pi * i / n, v = 2 * pi * j / m;
-      torus.row(i * m + j) << (2 + 0.6 * std::cos(v)) * std::cos(u),
-        (2 + 0.6 * std::cos(v)) * std::sin(u), 0.6 * std::sin(v);
-      const Index a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
-                  d = i * m + (j + 1) % m;
-      torusT.row(2 * (i * m + j)) << a, b, c;
-      torusT.row(2 * (i * m + j) + 1) << a, c, d;
-    }
-  }
+  Points torus;
+  Triangles torusT;
+  MakeTorus(16, 8, 2.0, 0.6, torus, torusT);
   r = ComputeSphericalConformalMap(torus, torusT);
   MOBIUS_CHECK(!r.Success);
   MOBIUS_CHECK(Contains(r.Message, "genus 1"));

@@ -2,6 +2,7 @@
 #include "CoreTest.h"
 #include "Icosphere.h"
 #include "MeshTopology.h"
+#include "Torus.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,26 +14,6 @@ using namespace mobius;
 
 namespace
 {
-// An n x m grid on the torus with radii 2 and 0.5, both directions wrapped: genus 1.
-void MakeTorus(int n, int m, Points& points, Triangles& triangles)
-{
-  points.resize(n * m, 3);
-  triangles.resize(2 * n * m, 3);
-  const double pi = std::acos(-1.0);
-  for (int i = 0; i < n; ++i)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      const double u = 2 * pi * i / n, v = 2 * pi * j / m;
-      points.row(i * m + j) << (2 + 0.5 * std::cos(v)) * std::cos(u),
-        (2 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v);
-      const Index a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
-                  d = i * m + (j + 1) % m;
-      triangles.row(2 * (i * m + j)) << a, b, c;
-      triangles.row(2 * (i * m + j) + 1) << a, c, d;
-    }
-  }
-}
 
 Triangles WithoutRows(const Triangles& triangles, const std::vector<Index>& drop)
 {
@@ -60,7 +41,7 @@ void TestSphereAndTorus()
   MOBIUS_CHECK(sphere.Edges == 3 * t.rows() / 2);
   MOBIUS_CHECK(DescribeTopologyProblems(sphere).empty());
 
-  MakeTorus(12, 8, p, t);
+  MakeTorus(12, 8, 2.0, 0.5, p, t);
   const MeshTopologyReport torus = AnalyzeMeshTopology(p, t);
   MOBIUS_CHECK(torus.IsClosedManifold());
   MOBIUS_CHECK(torus.EulerCharacteristic == 0);

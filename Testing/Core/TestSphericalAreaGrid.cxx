@@ -171,19 +171,26 @@ void TestExactTiling()
   }
 }
 
-void TestConservation()
+// A randomly rotated icosphere (level 4) whose triangles carry random areas in [0.01, 1].
+void MakeRandomMap(unsigned seed, Points& points, Triangles& triangles, Vector& areas)
 {
-  std::mt19937 generator(5);
+  std::mt19937 generator(seed);
   std::uniform_real_distribution<double> uniform(0.01, 1.0);
-  Points points;
-  Triangles triangles;
   mobius::MakeIcosphere(4, points, triangles);
   Rotate(points, RandomRotation(generator));
-  Vector areas(triangles.rows());
+  areas.resize(triangles.rows());
   for (Eigen::Index t = 0; t < areas.size(); ++t)
   {
     areas[t] = uniform(generator);
   }
+}
+
+void TestConservation()
+{
+  Points points;
+  Triangles triangles;
+  Vector areas;
+  MakeRandomMap(5, points, triangles, areas);
   const double total = areas.sum();
   for (int n : { 4, 16, 64, 256 })
   {
@@ -203,17 +210,10 @@ void TestConservation()
 // Rotating the map about z by one cell width moves the grid by exactly one column.
 void TestRotationShiftsOneColumn()
 {
-  std::mt19937 generator(17);
-  std::uniform_real_distribution<double> uniform(0.01, 1.0);
   Points points;
   Triangles triangles;
-  mobius::MakeIcosphere(4, points, triangles);
-  Rotate(points, RandomRotation(generator));
-  Vector areas(triangles.rows());
-  for (Eigen::Index t = 0; t < areas.size(); ++t)
-  {
-    areas[t] = uniform(generator);
-  }
+  Vector areas;
+  MakeRandomMap(17, points, triangles, areas);
   for (int n : { 16, 128 })
   {
     Points rotated = points;

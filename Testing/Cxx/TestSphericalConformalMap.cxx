@@ -3,6 +3,8 @@
 #include "MobiusTestUtilities.h"
 #include "vtkSphericalConformalMap.h"
 
+#include "Torus.h"
+
 #include "vtkExecutive.h"
 #include "vtkIntArray.h"
 #include "vtkSurfaceMeshReader.h"
@@ -44,20 +46,9 @@ vtkSmartPointer<vtkPolyData> Ellipsoid(int levels, double a, double b, double c)
 
 vtkSmartPointer<vtkPolyData> Torus(int n, int m)
 {
-  mobius::Points points(n * m, 3);
-  mobius::Triangles triangles(2 * n * m, 3);
-  for (int i = 0; i < n; ++i)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      const double u = 2 * vtkMath::Pi() * i / n, v = 2 * vtkMath::Pi() * j / m;
-      points.row(i * m + j) << (2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v);
-      const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m,
-                d = i * m + (j + 1) % m;
-      triangles.row(2 * a) << a, b, c;
-      triangles.row(2 * a + 1) << a, c, d;
-    }
-  }
+  mobius::Points points;
+  mobius::Triangles triangles;
+  mobius::MakeTorus(n, m, 2.0, 1.0, points, triangles);
   return ToPolyData(points, triangles);
 }
 
