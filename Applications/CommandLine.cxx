@@ -43,8 +43,8 @@ std::string UsageText()
           "                         target's point arrays; OUT.csv: per source vertex, the target\n"
           "                         triangle, its vertices and the barycentric coordinates.\n"
           "                         The demo writes mobius-demo/demo.{vtp,csv,png} by default.\n"
-          "  --png FILE             picture: source colored by position, target by the colors\n"
-          "                         mapped back from the source (needs X; use xvfb-run)\n"
+          "  --png FILE             picture: source colored by position, and the source mesh\n"
+          "                         placed on the target by the map (needs X; use xvfb-run)\n"
           "\n"
           "Conformal map:\n"
           "  --iterations N         maximum flow steps (default "
@@ -68,6 +68,12 @@ std::string UsageText()
        << defaults.NumberOfCandidates
        << ")\n"
           "Correspondence:\n"
+          "  --refine METHOD        spectral | none: refine the Moebius map (ZoomOut on the\n"
+          "                         surfaces' Laplace-Beltrami bases, from every candidate\n"
+          "                         rotation) or keep the paper's map (default spectral)\n"
+          "  --basis-size K         eigenfunctions of the refinement (default "
+       << defaults.BasisSize
+       << ")\n"
           "  --output-geometry G    target | source: where OUT.vtp's points are (default target)\n"
           "Other:\n"
           "  --force                overwrite existing output files\n"
@@ -140,6 +146,25 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
       {
         return false;
       }
+    }
+    else if (option == "--refine")
+    {
+      if (!value(text) || (text != "spectral" && text != "none"))
+      {
+        error = error.empty() ? "--refine must be spectral or none, not '" + text + "'" : error;
+        return false;
+      }
+      commandLine.Pipeline.Refine = text == "spectral";
+    }
+    else if (option == "--basis-size")
+    {
+      int number = 0;
+      if (!value(text) || !ParseInteger(text, number) || number < 2 || number > 500)
+      {
+        error = error.empty() ? "--basis-size needs an integer from 2 to 500, not '" + text + "'" : error;
+        return false;
+      }
+      commandLine.Pipeline.BasisSize = number;
     }
     else if (option == "--iterations" || option == "--resolution" || option == "--candidates")
     {

@@ -1,7 +1,5 @@
 #include "CorrespondencePicture.h"
 
-#include "vtkDenseCorrespondence.h"
-
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -9,6 +7,7 @@
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkRenderWindow.h"
@@ -125,7 +124,7 @@ vtkSmartPointer<vtkPolyData> OnSurface(vtkPolyData* map)
 }
 }
 
-bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* target,
+bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence,
   const std::string& pngPath, std::string& error, int width, int height)
 {
   // Debian's VTK renders through GLX only, and aborts the process without an X server.
@@ -139,25 +138,27 @@ bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* target
   source->ShallowCopy(alignedSource);
   AddPositionColors(source);
 
-  // The inverse map brings the source's colors to the target's vertices.
-  vtkNew<vtkDenseCorrespondence> inverse;
-  inverse->SetSourceData(source);
-  inverse->SetTargetData(target);
-  inverse->SetDirectionToTargetToSource();
-  inverse->SetOutputGeometryToSource(); // the query mesh (the target) on its own surface
-  inverse->Update();
-  if (inverse->GetOutput()->GetNumberOfPoints() == 0)
+  // The source mesh placed where the map sends each vertex, with the source's colors: a
+  // good map shows the target's shape with the colors laid out as on the source.
+  vtkDataArray* mapped = correspondence->GetPointData()->GetArray("MappedPoints");
+  if (!mapped || mapped->GetNumberOfTuples() != source->GetNumberOfPoints())
   {
-    error = "cannot map the colors onto the target";
+    error = "the correspondence has no MappedPoints for every source vertex";
     return false;
   }
+  vtkNew<vtkPolyData> placed;
+  placed->CopyStructure(source);
+  vtkNew<vtkPoints> placedPoints;
+  placedPoints->SetData(mapped);
+  placed->SetPoints(placedPoints);
+  placed->GetPointData()->AddArray(source->GetPointData()->GetArray("PositionColor"));
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(width, height);
   window->SetMultiSamples(0);
   AddSurface(OnSurface(source), window, 0.0, 0.5);
-  AddSurface(inverse->GetOutput(), window, 0.5, 1.0);
+  AddSurface(placed, window, 0.5, 1.0);
   window->Render();
   vtkNew<vtkWindowToImageFilter> capture;
   capture->SetInput(window);

@@ -53,6 +53,29 @@ std::string Array(vtkPolyData* data, const char* name, int components)
   return out + "]";
 }
 
+// What the refinement chose and why: every candidate's score, the kept one's index.
+std::string Refinement(vtkPolyData* refined, bool done)
+{
+  if (!done)
+  {
+    return "null";
+  }
+  std::ostringstream out;
+  out << "{\"method\": \"spectral\", \"basis_size\": " << Number(FieldValue(refined, "RefinementBasisSize"))
+      << ", \"kept_candidate\": " << Number(FieldValue(refined, "RefinementCandidate"))
+      << ", \"orthogonality_residual\": " << Number(FieldValue(refined, "RefinementOrthogonalityResidual"))
+      << ", \"candidates\": [";
+  vtkDataArray* residuals = refined->GetFieldData()->GetArray("CandidateOrthogonalityResiduals");
+  vtkDataArray* coverage = refined->GetFieldData()->GetArray("CandidateTargetCoverage");
+  for (vtkIdType c = 0; residuals && coverage && c < residuals->GetNumberOfTuples(); ++c)
+  {
+    out << (c ? ", " : "") << "{\"orthogonality_residual\": " << Number(residuals->GetComponent(c, 0))
+        << ", \"target_coverage\": " << Number(coverage->GetComponent(c, 0)) << "}";
+  }
+  out << "]}";
+  return out.str();
+}
+
 std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
 {
   std::ostringstream out;
@@ -93,7 +116,8 @@ std::string JsonSummary(const std::string& source, const std::string& target,
   }
   json << "],\n  \"source_map\": " << MapQuality(result.SourceMap, result.SourceCentered)
        << ",\n  \"target_map\": " << MapQuality(result.TargetMap, result.TargetCentered)
-       << ",\n  \"clamped_points\": " << Number(FieldValue(result.Correspondence, "ClampedPoints"))
+       << ",\n  \"clamped_points\": " << Number(FieldValue(result.MobiusCorrespondence, "ClampedPoints"))
+       << ",\n  \"refinement\": " << Refinement(result.Correspondence, result.Correspondence != result.MobiusCorrespondence)
        << ",\n  \"stages\": [";
   double total = 0;
   for (size_t s = 0; s < result.Stages.size(); ++s)

@@ -142,7 +142,8 @@ bool OutputFiles::WriteCsv(vtkPolyData* correspondence, vtkPolyData* targetMap, 
   return true;
 }
 
-bool OutputFiles::WritePicture(vtkPolyData* alignedSource, vtkPolyData* target, std::string& error)
+bool OutputFiles::WritePicture(
+  vtkPolyData* alignedSource, vtkPolyData* correspondence, std::string& error)
 {
   if (this->PicturePath.empty())
   {
@@ -150,7 +151,7 @@ bool OutputFiles::WritePicture(vtkPolyData* alignedSource, vtkPolyData* target, 
   }
   this->Written.push_back(this->PicturePath);
   if (!RenderCorrespondencePicture(
-        alignedSource, target, this->Temporary(this->PicturePath), error))
+        alignedSource, correspondence, this->Temporary(this->PicturePath), error))
   {
     error = this->PicturePath + ": " + error;
     return false;

@@ -27,7 +27,7 @@ public:
   /// the mapped position.
   bool WriteCsv(vtkPolyData* correspondence, vtkPolyData* targetMap, std::string& error);
   /// The picture, rendered by RenderCorrespondencePicture into a temporary file.
-  bool WritePicture(vtkPolyData* alignedSource, vtkPolyData* target, std::string& error);
+  bool WritePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence, std::string& error);
 
   /// Moves the temporary files into place.
   bool Commit(std::string& error);

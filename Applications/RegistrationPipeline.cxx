@@ -1,5 +1,6 @@
 #include "RegistrationPipeline.h"
 
+#include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
@@ -13,6 +14,7 @@
 #include "vtkNew.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -161,6 +163,22 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   correspondence->SetSourceData(result.Aligned);
   correspondence->SetTargetData(result.TargetCentered);
   correspondence->SetOutputGeometry(options.OutputGeometry);
-  return RunStage(correspondence, "dense correspondence", sourceName + " -> " + targetName,
-    progress, result, result.Correspondence, error);
+  if (!RunStage(correspondence, "dense correspondence", sourceName + " -> " + targetName,
+        progress, result, result.MobiusCorrespondence, error))
+  {
+    return false;
+  }
+  result.Correspondence = result.MobiusCorrespondence;
+  if (!options.Refine)
+  {
+    return true;
+  }
+  vtkNew<vtkCorrespondenceRefinement> refinement;
+  refinement->SetSourceData(result.Aligned);
+  refinement->SetTargetData(result.TargetCentered);
+  refinement->SetOutputGeometry(options.OutputGeometry);
+  refinement->SetBasisSize(options.BasisSize);
+  refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), options.BasisSize));
+  return RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress, result,
+    result.Correspondence, error);
 }

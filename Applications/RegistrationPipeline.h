@@ -1,6 +1,6 @@
 // The whole registration job on two meshes, as the command-line program and the benchmark
 // run it: conformal map and centering of each mesh, rotational alignment, dense
-// correspondence. Times each stage, reports progress, and turns the filters' error
+// correspondence, and its spectral refinement. Times each stage, reports progress, and turns the filters' error
 // messages into one message naming the input they concern.
 #ifndef RegistrationPipeline_h
 #define RegistrationPipeline_h
@@ -27,8 +27,10 @@ struct PipelineOptions
   double SmoothingTime = 5e-4;
   int TransformMode = 0; // 0 rotations, 1 reflections, 2 both
   int NumberOfCandidates = 4;
-  // vtkDenseCorrespondence
+  // vtkDenseCorrespondence / vtkCorrespondenceRefinement
   int OutputGeometry = 0; // 0 target surface, 1 source surface
+  bool Refine = true;     // spectral refinement of the Möbius map (false: the paper's map)
+  int BasisSize = 80;
 };
 
 struct StageTiming
@@ -42,7 +44,8 @@ struct PipelineResult
   vtkSmartPointer<vtkPolyData> SourceMap, TargetMap;           // conformal maps
   vtkSmartPointer<vtkPolyData> SourceCentered, TargetCentered; // centered maps
   vtkSmartPointer<vtkPolyData> Aligned;                        // source moved by vtkSO3Register
-  vtkSmartPointer<vtkPolyData> Correspondence;                 // vtkDenseCorrespondence output
+  vtkSmartPointer<vtkPolyData> MobiusCorrespondence; // vtkDenseCorrespondence output
+  vtkSmartPointer<vtkPolyData> Correspondence; // the final map: refined, or the Möbius one
   std::vector<StageTiming> Stages;
   std::vector<std::string> Warnings;
 };

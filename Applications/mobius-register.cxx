@@ -152,7 +152,7 @@ int main(int argc, char* argv[])
   }
   if (!outputs.WriteMesh(result.Correspondence, error) ||
     !outputs.WriteCsv(result.Correspondence, result.TargetCentered, error) ||
-    !outputs.WritePicture(result.Aligned, result.TargetCentered, error) || !outputs.Commit(error))
+    !outputs.WritePicture(result.Aligned, result.Correspondence, error) || !outputs.Commit(error))
   {
     return Fail(error);
   }

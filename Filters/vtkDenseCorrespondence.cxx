@@ -1,80 +1,25 @@
 #include "vtkDenseCorrespondence.h"
 
 #include "SphericalPointLocator.h"
+#include "vtkCorrespondenceOutput.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
-#include "vtkIdList.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <sstream>
 
 vtkStandardNewMacro(vtkDenseCorrespondence);
 
 namespace
 {
-// The located-in mesh's triangle vertex ids and barycentric weights of each query.
-struct Correspondence
-{
-  std::vector<mobius::SphericalLocation> Locations;
-  const mobius::Triangles* Triangles = nullptr;
-
-  vtkIdType Vertex(size_t query, int k) const
-  {
-    return (*this->Triangles)(this->Locations[query].Triangle, k);
-  }
-  vtkIdType NearestVertex(size_t query) const
-  {
-    Eigen::Index k;
-    this->Locations[query].Barycentric.maxCoeff(&k);
-    return this->Vertex(query, static_cast<int>(k));
-  }
-};
-
-// Floating-point arrays are interpolated; integer, string and other arrays hold categories
-// or ids that must not be averaged, so they take the nearest vertex's value.
-vtkSmartPointer<vtkAbstractArray> Transfer(vtkAbstractArray* source, const Correspondence& map)
-{
-  vtkSmartPointer<vtkAbstractArray> result;
-  result.TakeReference(source->NewInstance());
-  result->SetName(source->GetName());
-  result->SetNumberOfComponents(source->GetNumberOfComponents());
-  const size_t n = map.Locations.size();
-  result->SetNumberOfTuples(static_cast<vtkIdType>(n));
-  auto data = vtkDataArray::SafeDownCast(result);
-  const bool interpolate =
-    data && (source->GetDataType() == VTK_FLOAT || source->GetDataType() == VTK_DOUBLE);
-  vtkNew<vtkIdList> ids;
-  ids->SetNumberOfIds(3);
-  for (size_t q = 0; q < n; ++q)
-  {
-    if (interpolate)
-    {
-      double weights[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        ids->SetId(k, map.Vertex(q, k));
-        weights[k] = map.Locations[q].Barycentric[k];
-      }
-      data->InterpolateTuple(static_cast<vtkIdType>(q), ids, source, weights);
-    }
-    else
-    {
-      result->SetTuple(static_cast<vtkIdType>(q), map.NearestVertex(q), source);
-    }
-  }
-  return result;
-}
-
 std::string CheckSurfacePoints(vtkPolyData* map)
 {
   vtkDataArray* surface = map->GetPointData()->GetArray(mobius::vtk::SurfacePointsArrayName);
@@ -155,13 +100,12 @@ int vtkDenseCorrespondence::RequestData(
     return 0;
   }
   this->UpdateProgress(0.2);
-  Correspondence map;
-  map.Triangles = &triangles[located];
+  std::vector<mobius::SphericalLocation> locations;
   auto progress = [this](double fraction) {
     this->UpdateProgress(0.2 + 0.6 * fraction);
     return !this->GetAbortExecute();
   };
-  if (!locator.LocateAll(points[query], map.Locations, 0, progress))
+  if (!locator.LocateAll(points[query], locations, 0, progress))
   {
     if (!this->GetAbortExecute())
     {
@@ -170,53 +114,19 @@ int vtkDenseCorrespondence::RequestData(
     return 0;
   }
 
-  vtkPolyData* queryMesh = inputs[query];
-  vtkPolyData* locatedMesh = inputs[located];
-  output->ShallowCopy(queryMesh);
-  vtkPointData* outPD = output->GetPointData();
-
-  vtkNew<vtkIdTypeArray> cellIds;
-  cellIds->SetName("TargetCellId");
-  vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("TargetBarycentric");
-  barycentric->SetNumberOfComponents(3);
+  mobius::vtk::SurfaceLocations map;
+  map.LocatedTriangles = &triangles[located];
   vtkIdType clamped = 0;
   double maximumClampDistance = 0;
-  for (const auto& location : map.Locations)
+  for (const auto& location : locations)
   {
-    cellIds->InsertNextValue(location.Triangle);
-    barycentric->InsertNextTuple(location.Barycentric.data());
+    map.Triangle.push_back(location.Triangle);
+    map.Barycentric.push_back(location.Barycentric);
     clamped += location.Clamped ? 1 : 0;
     maximumClampDistance = std::max(maximumClampDistance, location.AngularDistance);
   }
-  auto mapped = Transfer(
-    locatedMesh->GetPointData()->GetArray(mobius::vtk::SurfacePointsArrayName), map);
-  mapped->SetName("MappedPoints");
-  for (int a = 0; a < locatedMesh->GetPointData()->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = locatedMesh->GetPointData()->GetAbstractArray(a);
-    if (!array->GetName() ||
-      std::string(array->GetName()) == mobius::vtk::SurfacePointsArrayName)
-    {
-      continue;
-    }
-    auto transferred = Transfer(array, map);
-    if (outPD->HasArray(array->GetName()))
-    {
-      transferred->SetName((std::string(array->GetName()) + "_Target").c_str());
-    }
-    outPD->AddArray(transferred);
-  }
-  outPD->AddArray(cellIds);
-  outPD->AddArray(barycentric);
-  outPD->AddArray(mapped);
-
-  vtkNew<vtkPoints> outputPoints;
-  outputPoints->SetDataTypeToDouble();
-  outputPoints->SetData(this->OutputGeometry == TARGET
-      ? vtkDataArray::SafeDownCast(mapped)
-      : queryMesh->GetPointData()->GetArray(mobius::vtk::SurfacePointsArrayName));
-  output->SetPoints(outputPoints);
+  mobius::vtk::AssembleCorrespondence(
+    inputs[query], inputs[located], map, this->OutputGeometry == TARGET, output);
 
   mobius::vtk::SetFieldValue(output->GetFieldData(), "ClampedPoints", static_cast<double>(clamped));
   mobius::vtk::SetFieldValue(output->GetFieldData(), "MaximumClampDistance", maximumClampDistance);

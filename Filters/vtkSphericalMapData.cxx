@@ -6,6 +6,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
@@ -137,6 +138,31 @@ std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& 
     error = ExtractSurfaceAreas(input, areas);
   }
   return error;
+}
+
+std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints)
+{
+  vtkDataArray* array = input->GetPointData()->GetArray(SurfacePointsArrayName);
+  if (!array || array->GetNumberOfComponents() != 3 ||
+    array->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return std::string("it has no 3-component point array '") + SurfacePointsArrayName +
+      "' (the original surface positions; vtkSphericalConformalMap makes it)";
+  }
+  surfacePoints.resize(array->GetNumberOfTuples(), 3);
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    double p[3];
+    array->GetTuple(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      std::ostringstream error;
+      error << "point array '" << SurfacePointsArrayName << "' is not finite at point " << i;
+      return error.str();
+    }
+    surfacePoints.row(i) << p[0], p[1], p[2];
+  }
+  return {};
 }
 
 void SetPoints(vtkPolyData* output, const Points& points)

@@ -49,6 +49,9 @@ std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas);
 std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& points,
   Triangles& triangles, Vector& areas);
 
+/// Reads point data `SurfacePoints` (3 components, one tuple per point, finite).
+std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints);
+
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);
 

@@ -1,0 +1,91 @@
+// Spectral refinement of a pointwise map between two surfaces: ZoomOut (Melzi, Ren, Rodolà,
+// Sharma, Wonka & Ovsjanikov, "ZoomOut: Spectral Upsampling for Efficient Shape
+// Correspondence", SIGGRAPH Asia 2019), run on evenly spread vertex samples and extended to
+// every vertex at the end, with the mapped points placed inside target triangles.
+//
+// Conventions: Phi_S (n_S x k) and Phi_T (n_T x k) are the surfaces' Laplace-Beltrami
+// eigenfunctions, mass-orthonormal on the unit-area surfaces. A pointwise map T (source
+// vertex i -> target vertex T(i)) and the functional map C (k x k) are related by
+// Phi_S C ~ Pi Phi_T, i.e. row T(i) of Phi_T ~ row i of Phi_S times C; C pulls target
+// functions back to the source. An area-preserving map has an orthogonal C.
+#ifndef mobius_ZoomOut_h
+#define mobius_ZoomOut_h
+
+#include "LaplaceBeltramiBasis.h"
+#include "MeshAdjacency.h"
+#include "MeshTypes.h"
+#include "SpectralSearch.h"
+
+#include <string>
+#include <vector>
+
+namespace mobius
+{
+/// What the refinement needs of one surface, computed once and reused for every candidate
+/// start.
+struct SpectralSurface
+{
+  Triangles Faces;
+  RowMatrix Embedding;  ///< n x k eigenfunction values, one row per vertex
+  Vector Eigenvalues;   ///< k, ascending, of the unit-area surface
+  Vector Mass;          ///< lumped mass of the unit-area surface
+  VertexLists Neighbors;
+  VertexLists Corners;  ///< triangles around each vertex
+  std::vector<Index> Samples;      ///< vertex indices, farthest-point order
+  std::vector<Index> SampleLabels; ///< per vertex: position in Samples of its nearest sample
+};
+
+/// Eigenbasis of `basisSize` functions, adjacency and `sampleCount` samples of a closed
+/// manifold triangle mesh. False with `error` set if the eigenbasis cannot be computed.
+bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, int basisSize,
+  Index sampleCount, SpectralSurface& surface, std::string& error);
+
+struct ZoomOutParameters
+{
+  int StartSize = 20;  ///< basis size of the first iteration
+  int FinalSize = 80;  ///< basis size of the last (at most the surfaces' basis size)
+  int SizeStep = 5;    ///< growth per iteration
+  int FullResolutionIterations = 2; ///< iterations on all vertices after the extension
+  int NumberOfThreads = 0;          ///< 0: one per core
+};
+
+/// The map between the samples after ZoomOut, and how good it looks without ground truth.
+struct SampleMap
+{
+  std::vector<Index> TargetVertex;  ///< per source sample, a target vertex (a target sample)
+  Eigen::MatrixXd FunctionalMap;    ///< FinalSize x FinalSize
+  /// |C^T C - I|_F / sqrt(k): 0 for an area-preserving (e.g. isometric) map. Candidate
+  /// starts that put parts on the wrong side converge to maps far from orthogonal.
+  double OrthogonalityResidual = 0;
+  /// Share of target samples that are the image of some source sample: low when the map
+  /// folds several parts of the source onto one part of the target.
+  double TargetCoverage = 0;
+};
+
+/// ZoomOut from `initialTargetVertex` (one target vertex per source sample, e.g. read off
+/// the Möbius map) on the samples of both surfaces.
+SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
+  const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters);
+
+/// A point on the target surface for every source vertex.
+struct DenseMap
+{
+  std::vector<Index> Triangle;                ///< target triangle
+  std::vector<Eigen::Vector3d> Barycentric;   ///< in that triangle
+  std::vector<Index> NearestVertex;           ///< target vertex nearest in the embedding
+  Eigen::MatrixXd FunctionalMap;              ///< of the final vertex map
+  double OrthogonalityResidual = 0;
+};
+
+/// Extends a sample map to every source vertex: each vertex starts from the image of its
+/// nearest sample and descends on the target mesh to the vertex nearest in the embedding;
+/// `FullResolutionIterations` ZoomOut steps at full size follow; each point is finally
+/// projected onto the target triangles around its vertex.
+DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& samples, const ZoomOutParameters& parameters);
+
+/// |C^T C - I|_F / sqrt(k).
+double OrthogonalityResidual(const Eigen::MatrixXd& functionalMap);
+}
+
+#endif

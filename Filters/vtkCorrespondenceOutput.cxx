@@ -1,0 +1,116 @@
+#include "vtkCorrespondenceOutput.h"
+
+#include "vtkSphericalMapData.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+namespace mobius
+{
+namespace vtk
+{
+namespace
+{
+vtkIdType Vertex(const SurfaceLocations& map, size_t query, int k)
+{
+  return (*map.LocatedTriangles)(map.Triangle[query], k);
+}
+
+vtkIdType NearestVertex(const SurfaceLocations& map, size_t query)
+{
+  Eigen::Index k;
+  map.Barycentric[query].maxCoeff(&k);
+  return Vertex(map, query, static_cast<int>(k));
+}
+
+// Floating-point arrays are interpolated; integer, string and other arrays hold categories
+// or ids that must not be averaged, so they take the nearest vertex's value.
+vtkSmartPointer<vtkAbstractArray> Transfer(vtkAbstractArray* source, const SurfaceLocations& map)
+{
+  vtkSmartPointer<vtkAbstractArray> result;
+  result.TakeReference(source->NewInstance());
+  result->SetName(source->GetName());
+  result->SetNumberOfComponents(source->GetNumberOfComponents());
+  const size_t n = map.Triangle.size();
+  result->SetNumberOfTuples(static_cast<vtkIdType>(n));
+  auto data = vtkDataArray::SafeDownCast(result);
+  const bool interpolate =
+    data && (source->GetDataType() == VTK_FLOAT || source->GetDataType() == VTK_DOUBLE);
+  vtkNew<vtkIdList> ids;
+  ids->SetNumberOfIds(3);
+  for (size_t q = 0; q < n; ++q)
+  {
+    if (interpolate)
+    {
+      double weights[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        ids->SetId(k, Vertex(map, q, k));
+        weights[k] = map.Barycentric[q][k];
+      }
+      data->InterpolateTuple(static_cast<vtkIdType>(q), ids, source, weights);
+    }
+    else
+    {
+      result->SetTuple(static_cast<vtkIdType>(q), NearestVertex(map, q), source);
+    }
+  }
+  return result;
+}
+}
+
+void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
+  const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output)
+{
+  output->ShallowCopy(queryMesh);
+  vtkPointData* outPD = output->GetPointData();
+
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName("TargetCellId");
+  cellIds->SetNumberOfTuples(static_cast<vtkIdType>(locations.Triangle.size()));
+  vtkNew<vtkDoubleArray> barycentric;
+  barycentric->SetName("TargetBarycentric");
+  barycentric->SetNumberOfComponents(3);
+  barycentric->SetNumberOfTuples(static_cast<vtkIdType>(locations.Triangle.size()));
+  for (size_t q = 0; q < locations.Triangle.size(); ++q)
+  {
+    cellIds->SetValue(static_cast<vtkIdType>(q), locations.Triangle[q]);
+    barycentric->SetTuple(static_cast<vtkIdType>(q), locations.Barycentric[q].data());
+  }
+  auto mapped =
+    Transfer(locatedMesh->GetPointData()->GetArray(SurfacePointsArrayName), locations);
+  mapped->SetName("MappedPoints");
+  for (int a = 0; a < locatedMesh->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = locatedMesh->GetPointData()->GetAbstractArray(a);
+    if (!array->GetName() || std::string(array->GetName()) == SurfacePointsArrayName)
+    {
+      continue;
+    }
+    auto transferred = Transfer(array, locations);
+    if (outPD->HasArray(array->GetName()))
+    {
+      transferred->SetName((std::string(array->GetName()) + "_Target").c_str());
+    }
+    outPD->AddArray(transferred);
+  }
+  outPD->AddArray(cellIds);
+  outPD->AddArray(barycentric);
+  outPD->AddArray(mapped);
+
+  vtkNew<vtkPoints> outputPoints;
+  outputPoints->SetDataTypeToDouble();
+  outputPoints->SetData(pointsOnTarget
+      ? vtkDataArray::SafeDownCast(mapped)
+      : queryMesh->GetPointData()->GetArray(SurfacePointsArrayName));
+  output->SetPoints(outputPoints);
+}
+}
+}

@@ -1,0 +1,40 @@
+/**
+ * @file vtkCorrespondenceOutput.h
+ * @brief The output of a dense correspondence, shared by vtkDenseCorrespondence and
+ * vtkCorrespondenceRefinement so that both honour one data contract (private to the module).
+ *
+ * Given, for every vertex of the query mesh, a triangle of the located mesh and barycentric
+ * coordinates in it, builds the output: the query mesh's connectivity and point arrays,
+ * `TargetCellId`, `TargetBarycentric`, `MappedPoints` (the located mesh's `SurfacePoints`
+ * interpolated), every other point array of the located mesh transferred (floating-point
+ * arrays interpolated, others from the nearest vertex; a name clash gets `_Target`), and the
+ * points placed on the target surface or kept on the source surface.
+ */
+#ifndef vtkCorrespondenceOutput_h
+#define vtkCorrespondenceOutput_h
+
+#include "MeshTypes.h"
+
+#include <vector>
+
+class vtkPolyData;
+
+namespace mobius
+{
+namespace vtk
+{
+struct SurfaceLocations
+{
+  const Triangles* LocatedTriangles = nullptr;
+  std::vector<Index> Triangle;
+  std::vector<Eigen::Vector3d> Barycentric;
+};
+
+/// Fills `output` as described above. `pointsOnTarget` places the output's points at the
+/// mapped positions, otherwise at the query mesh's own `SurfacePoints`.
+void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
+  const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output);
+}
+}
+
+#endif

@@ -1,0 +1,267 @@
+#include "vtkCorrespondenceRefinement.h"
+
+#include "SphericalPointLocator.h"
+#include "ZoomOut.h"
+#include "vtkCorrespondenceOutput.h"
+#include "vtkSphericalMapData.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+
+#include <Eigen/Core>
+
+#include <chrono>
+#include <future>
+#include <iostream>
+#include <sstream>
+
+vtkStandardNewMacro(vtkCorrespondenceRefinement);
+
+namespace
+{
+// One spherical map of the pipeline, as the core sees it.
+struct MapInput
+{
+  mobius::Points Sphere;
+  mobius::Points Surface;
+  mobius::Triangles Triangles;
+};
+
+std::string ExtractMapInput(vtkPolyData* input, int basisSize, MapInput& map)
+{
+  std::string error = mobius::vtk::ExtractPoints(input, map.Sphere);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractTriangles(input, map.Triangles);
+  }
+  if (error.empty() && map.Triangles.rows() == 0)
+  {
+    error = "it has no triangles";
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::CheckOnUnitSphere(map.Sphere);
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractSurfacePoints(input, map.Surface);
+  }
+  if (error.empty() && map.Sphere.rows() < 2 * basisSize)
+  {
+    std::ostringstream message;
+    message << "it has " << map.Sphere.rows() << " points, fewer than twice the BasisSize ("
+            << basisSize << ")";
+    error = message.str();
+  }
+  return error;
+}
+
+using Matrix3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+// The transforms to start from, as rotations of the already aligned source: the aligned
+// points are T_best x, so candidate T_j is reached by T_j T_best^-1 (T orthogonal).
+std::vector<Matrix3> CandidateStarts(vtkPolyData* aligned, bool searchCandidates)
+{
+  std::vector<Matrix3> starts{ Matrix3::Identity() };
+  vtkDataArray* best = aligned->GetFieldData()->GetArray("Rotation");
+  vtkDataArray* candidates = aligned->GetFieldData()->GetArray("CandidateTransforms");
+  if (!searchCandidates || !best || !candidates || best->GetNumberOfComponents() != 9 ||
+    candidates->GetNumberOfComponents() != 9)
+  {
+    return starts;
+  }
+  Matrix3 bestTransform;
+  best->GetTuple(0, bestTransform.data());
+  for (vtkIdType c = 0; c < candidates->GetNumberOfTuples(); ++c)
+  {
+    Matrix3 transform;
+    candidates->GetTuple(c, transform.data());
+    if (!transform.allFinite() || (transform - bestTransform).norm() < 1e-9)
+    {
+      continue; // the best one is already first
+    }
+    starts.emplace_back(transform * bestTransform.transpose());
+  }
+  return starts;
+}
+
+void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector<double>& values)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  fieldData->RemoveArray(name);
+  fieldData->AddArray(array);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkCorrespondenceRefinement::vtkCorrespondenceRefinement()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkCorrespondenceRefinement::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkCorrespondenceRefinement::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* inputs[2] = { vtkPolyData::GetData(inputVector[0]),
+    vtkPolyData::GetData(inputVector[1]) };
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!inputs[0] || !inputs[1] || !output)
+  {
+    vtkErrorMacro(<< "Both a Source (port 0) and a Target (port 1) spherical map are required.");
+    return 0;
+  }
+  if (this->StartBasisSize > this->BasisSize)
+  {
+    vtkErrorMacro(<< "StartBasisSize (" << this->StartBasisSize
+                  << ") must not exceed BasisSize (" << this->BasisSize << ").");
+    return 0;
+  }
+  const char* names[2] = { "Source (port 0)", "Target (port 1)" };
+  MapInput maps[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    const std::string error = ExtractMapInput(inputs[k], this->BasisSize, maps[k]);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << error << ".");
+      return 0;
+    }
+  }
+
+  try
+  {
+    // The two eigenbases are independent: compute them side by side.
+    mobius::SpectralSurface surfaces[2];
+    std::string errors[2];
+    auto prepare = [&](int k) {
+      return mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles, this->BasisSize,
+        this->NumberOfSamples, surfaces[k], errors[k]);
+    };
+    auto T00 = std::chrono::steady_clock::now();
+    auto targetReady = std::async(std::launch::async, prepare, 1);
+    const bool sourceOk = prepare(0);
+    const bool targetOk = targetReady.get();
+    for (int k = 0; k < 2; ++k)
+    {
+      if (!(k == 0 ? sourceOk : targetOk))
+      {
+        vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << errors[k] << ".");
+        return 0;
+      }
+    }
+    auto T0 = std::chrono::steady_clock::now();
+    auto lap = [&](const char* what) { if (getenv("MOBIUS_DEBUG")) { auto t = std::chrono::steady_clock::now(); std::cerr << what << " " << std::chrono::duration<double>(t - T0).count() << std::endl; T0 = t; } };
+    T0 = T00; lap("prepared");
+    this->UpdateProgress(0.5);
+    if (this->GetAbortExecute())
+    {
+      return 0;
+    }
+
+    mobius::SphericalPointLocator locator;
+    std::string error;
+    if (!locator.Build(maps[1].Sphere, maps[1].Triangles, error))
+    {
+      vtkErrorMacro(<< "Cannot refine: the " << names[1] << ": " << error << ".");
+      return 0;
+    }
+    mobius::ZoomOutParameters parameters;
+    parameters.StartSize = this->StartBasisSize;
+    parameters.FinalSize = this->BasisSize;
+    parameters.SizeStep = this->BasisSizeStep;
+    parameters.FullResolutionIterations = this->FullResolutionIterations;
+
+    // ZoomOut from every candidate; keep the most orthogonal functional map.
+    const std::vector<Matrix3> starts = CandidateStarts(inputs[0], this->SearchCandidates);
+    const std::vector<mobius::Index>& samples = surfaces[0].Samples;
+    std::vector<double> residuals, coverage;
+    mobius::SampleMap best;
+    int bestCandidate = 0;
+    for (size_t c = 0; c < starts.size(); ++c)
+    {
+      std::vector<mobius::Index> initial(samples.size());
+      for (size_t s = 0; s < samples.size(); ++s)
+      {
+        const Eigen::Vector3d p = starts[c] * maps[0].Sphere.row(samples[s]).transpose();
+        const mobius::SphericalLocation location = locator.Locate(p);
+        Eigen::Index corner = 0;
+        location.Barycentric.maxCoeff(&corner);
+        initial[s] = maps[1].Triangles(location.Triangle, corner);
+      }
+      mobius::SampleMap refined =
+        mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], initial, parameters);
+      lap("candidate");
+      residuals.push_back(refined.OrthogonalityResidual);
+      coverage.push_back(refined.TargetCoverage);
+      if (c == 0 || refined.OrthogonalityResidual < best.OrthogonalityResidual)
+      {
+        best = std::move(refined);
+        bestCandidate = static_cast<int>(c);
+      }
+      this->UpdateProgress(0.5 + 0.3 * (c + 1) / starts.size());
+      if (this->GetAbortExecute())
+      {
+        return 0;
+      }
+    }
+
+    const mobius::DenseMap dense =
+      mobius::ExtendToAllVertices(surfaces[0], surfaces[1], best, parameters);
+    lap("extended");
+    mobius::vtk::SurfaceLocations locations;
+    locations.LocatedTriangles = &maps[1].Triangles;
+    locations.Triangle = dense.Triangle;
+    locations.Barycentric = dense.Barycentric;
+    mobius::vtk::AssembleCorrespondence(
+      inputs[0], inputs[1], locations, this->OutputGeometry == TARGET, output);
+
+    vtkFieldData* fieldData = output->GetFieldData();
+    mobius::vtk::SetFieldValue(fieldData, "RefinementCandidate", bestCandidate);
+    SetFieldVector(fieldData, "CandidateOrthogonalityResiduals", residuals);
+    SetFieldVector(fieldData, "CandidateTargetCoverage", coverage);
+    mobius::vtk::SetFieldValue(
+      fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
+    mobius::vtk::SetFieldValue(
+      fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
+  }
+  catch (const std::exception& exception)
+  {
+    vtkErrorMacro(<< "Refinement failed: " << exception.what() << ".");
+    return 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "BasisSize: " << this->BasisSize << "\n";
+  os << indent << "StartBasisSize: " << this->StartBasisSize << "\n";
+  os << indent << "BasisSizeStep: " << this->BasisSizeStep << "\n";
+  os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
+  os << indent << "FullResolutionIterations: " << this->FullResolutionIterations << "\n";
+  os << indent << "SearchCandidates: " << this->SearchCandidates << "\n";
+  os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
+}

