@@ -409,6 +409,11 @@ void TestErrors()
   EdgePathGeodesics geodesics;
   MOBIUS_CHECK(!geodesics.Build(grid.P, bad, error));
   MOBIUS_CHECK(error.find("target triangle 2") != std::string::npos);
+  MOBIUS_CHECK(geodesics.Build(grid.P, grid.T, error));
+  EdgePathGeodesics::Workspace workspace;
+  MOBIUS_CHECK(std::isnan(geodesics.Distance(grid.P.rows(), mapped[0], workspace)));
+  MOBIUS_CHECK(std::isnan(geodesics.Distance(mapped[1], SurfacePoint(), workspace)));
+  MOBIUS_CHECK(geodesics.Distance(0, mapped[grid.Vertex(3, 0)], workspace) == 3 * grid.H);
 
   // Two separate triangles: no edge path, an infinite error, counted as unreachable.
   Points two(6, 3);

@@ -253,6 +253,10 @@ double EdgePathGeodesics::Distance(
   const SurfacePoint& from, const SurfacePoint& to, Workspace& workspace) const
 {
   workspace.LastSettled = 0;
+  if (!this->IsValid(from) || !this->IsValid(to))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   const Eigen::Vector3d q = this->Position(from);
   if (from.Triangle == to.Triangle || SharesVertex(this->Triangles_, from.Triangle, to.Triangle))
   {
@@ -273,6 +277,10 @@ double EdgePathGeodesics::Distance(
   Index fromVertex, const SurfacePoint& to, Workspace& workspace) const
 {
   workspace.LastSettled = 0;
+  if (fromVertex < 0 || fromVertex >= this->Points_.rows() || !this->IsValid(to))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   for (int k = 0; k < 3; ++k)
   {
     if (this->Triangles_(to.Triangle, k) == fromVertex)

@@ -108,8 +108,9 @@ public:
   /// vertex indices.
   bool Build(const Points& points, const Triangles& triangles, std::string& error);
 
-  /// Edge-path distance from `from` to `to` (both must be valid: triangle in range); +infinity
-  /// if no edge path joins them. Thread-safe with one Workspace per thread.
+  /// Edge-path distance from `from` to `to`; +infinity if no edge path joins them, NaN if a
+  /// triangle or vertex index is out of range or a weight is not finite. Thread-safe with one
+  /// Workspace per thread.
   double Distance(const SurfacePoint& from, const SurfacePoint& to, Workspace& workspace) const;
   /// From a vertex of the mesh.
   double Distance(Index fromVertex, const SurfacePoint& to, Workspace& workspace) const;
@@ -127,6 +128,12 @@ public:
   double GetSurfaceArea() const { return this->SurfaceArea; }
 
 private:
+  bool IsValid(const SurfacePoint& point) const
+  {
+    return point.Triangle >= 0 && point.Triangle < this->Triangles_.rows() &&
+      point.Barycentric.allFinite();
+  }
+
   /// Seeds: up to three vertices with their starting distances.
   double Search(const std::array<std::int32_t, 3>& seeds, const std::array<double, 3>& seedDistance,
     int seedCount, const SurfacePoint& to, Workspace& workspace) const;
