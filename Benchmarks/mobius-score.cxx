@@ -1,0 +1,708 @@
+// mobius-score: how far a dense map computed by mobius-register is from the ground truth, by the
+// project's measurement protocol (Kim et al. 2011): per source vertex, the distance on the target
+// between the mapped point and the true image, in units of sqrt(target area); mean, median, 90th
+// percentile and the shares within 0.025, 0.05, 0.1 and 0.25, Euclidean and geodesic (edge
+// paths, see Filters/Core/Correspondence/CorrespondenceScore.h). Run mobius-score --help.
+#include "CorrespondenceScore.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSurfaceMeshReader.h"
+#include "vtkTriangleFilter.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+const char* const Program = "mobius-score";
+
+const char* const Usage =
+  "usage: mobius-score SOURCE TARGET MAP.csv [options]\n"
+  "\n"
+  "Scores the dense map MAP.csv that mobius-register computed from SOURCE to TARGET against\n"
+  "the ground truth: per source vertex, the distance on TARGET between its mapped point and\n"
+  "its true image, divided by sqrt(area of TARGET) (Kim et al. 2011). Prints the mean, median,\n"
+  "90th percentile and the shares of source vertices within 0.025, 0.05, 0.1 and 0.25, for the\n"
+  "Euclidean distance and for the geodesic distance (shortest paths along TARGET's edges, which\n"
+  "overestimate true geodesics by a few percent).\n"
+  "\n"
+  "options:\n"
+  "  --truth FILE        the true image of each source vertex: one line per source vertex,\n"
+  "                      either a target vertex index, or a target triangle index and three\n"
+  "                      barycentric weights (separated by commas or spaces); empty lines and\n"
+  "                      lines starting with # are skipped. Default: identity (source vertex i\n"
+  "                      is target vertex i; the meshes must have as many vertices)\n"
+  "  --json              print the figures as JSON instead of a Markdown table\n"
+  "  --max-geodesic N    compute geodesic errors for at most N source vertices, an even\n"
+  "                      deterministic subsample (default 0: all)\n"
+  "  --errors FILE       also write per-vertex errors: source_vertex,euclidean,geodesic\n"
+  "  --threads N         threads for the geodesic searches (default 0: one per core)\n"
+  "  -h, --help          print this help\n"
+  "\n"
+  "Exit status: 0 on success, 1 for input that cannot be read or does not fit together (row\n"
+  "count, index out of range), 2 for a usage error.\n";
+
+int Fail(const std::string& message, int status = 1)
+{
+  std::cerr << Program << ": " << message << std::endl;
+  return status;
+}
+
+int UsageError(const std::string& message)
+{
+  std::cerr << Program << ": " << message << " (see mobius-score --help)" << std::endl;
+  return 2;
+}
+
+// Reads a mesh, turning the reader's error into one line that names the file.
+bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::string& error)
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  std::string message;
+  vtkNew<vtkCallbackCommand> catcher;
+  catcher->SetClientData(&message);
+  catcher->SetCallback([](vtkObject*, unsigned long, void* out, void* data) {
+    auto text = static_cast<std::string*>(out);
+    if (text->empty() && data)
+    {
+      *text = static_cast<const char*>(data);
+    }
+  });
+  vtkNew<vtkCallbackCommand> ignore;
+  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (!message.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    const auto start = message.find(path);
+    error = start != std::string::npos ? message.substr(start) : path + ": cannot read the mesh";
+    while (!error.empty() && (error.back() == '\n' || error.back() == ' '))
+    {
+      error.pop_back();
+    }
+    return false;
+  }
+  mesh = reader->GetOutput();
+  return true;
+}
+
+// The target as the core sees it: points, and triangles split from polygons the way
+// vtkSphericalConformalMap splits them (vtkTriangleFilter), so triangle rows match the map's.
+bool ExtractTriangleMesh(
+  vtkPolyData* input, mobius::Points& points, mobius::Triangles& triangles, std::string& error)
+{
+  vtkSmartPointer<vtkPolyData> surface = input;
+  bool triangulate = input->GetNumberOfStrips() > 0;
+  vtkCellArray* polys = input->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells() && !triangulate; ++c)
+  {
+    triangulate = polys->GetCellSize(c) != 3;
+  }
+  if (triangulate)
+  {
+    vtkNew<vtkPolyData> shallow;
+    shallow->ShallowCopy(input);
+    vtkNew<vtkTriangleFilter> filter;
+    filter->SetInputData(shallow);
+    filter->PassVertsOff();
+    filter->PassLinesOff();
+    filter->Update();
+    surface = filter->GetOutput();
+  }
+  points.resize(surface->GetNumberOfPoints(), 3);
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    surface->GetPoint(i, x);
+    points.row(i) << x[0], x[1], x[2];
+  }
+  vtkCellArray* cells = surface->GetPolys();
+  triangles.resize(cells->GetNumberOfCells(), 3);
+  vtkIdType row = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+  {
+    cells->GetCellAtId(c, ids);
+    if (ids->GetNumberOfIds() != 3)
+    {
+      continue;
+    }
+    triangles.row(row++) << ids->GetId(0), ids->GetId(1), ids->GetId(2);
+  }
+  triangles.conservativeResize(row, 3);
+  if (row == 0)
+  {
+    error = "has no triangles";
+    return false;
+  }
+  return true;
+}
+
+// Comma- or blank-separated fields of a line (empty fields are dropped).
+std::vector<std::string> Fields(const std::string& line)
+{
+  std::vector<std::string> fields;
+  std::string field;
+  for (char c : line + ",")
+  {
+    if (c == ',' || c == ' ' || c == '\t' || c == '\r')
+    {
+      if (!field.empty())
+      {
+        fields.push_back(field);
+      }
+      field.clear();
+    }
+    else
+    {
+      field += c;
+    }
+  }
+  return fields;
+}
+
+bool ParseIndex(const std::string& text, mobius::Index& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const long long parsed = std::strtoll(text.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0')
+  {
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+bool ParseNumber(const std::string& text, double& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return *end == '\0' && std::isfinite(value);
+}
+
+// Finds the triangle with vertices {a, b, c} (in any order) and orders the weights like its row.
+class TriangleFinder
+{
+public:
+  explicit TriangleFinder(const mobius::Triangles& triangles)
+    : Rows(triangles)
+  {
+  }
+
+  // Row `hint` if it has these vertices, otherwise any row that has; -1 if none.
+  mobius::Index Find(mobius::Index hint, const std::array<mobius::Index, 3>& vertices,
+    const Eigen::Vector3d& weights, Eigen::Vector3d& ordered)
+  {
+    if (hint >= 0 && hint < this->Rows.rows() && this->Match(hint, vertices, weights, ordered))
+    {
+      return hint;
+    }
+    if (this->Lookup.empty())
+    {
+      for (mobius::Index t = 0; t < this->Rows.rows(); ++t)
+      {
+        this->Lookup.emplace(Key({ this->Rows(t, 0), this->Rows(t, 1), this->Rows(t, 2) }), t);
+      }
+    }
+    const auto found = this->Lookup.find(Key(vertices));
+    if (found != this->Lookup.end() && this->Match(found->second, vertices, weights, ordered))
+    {
+      return found->second;
+    }
+    return -1;
+  }
+
+private:
+  static std::array<mobius::Index, 3> Key(std::array<mobius::Index, 3> vertices)
+  {
+    std::sort(vertices.begin(), vertices.end());
+    return vertices;
+  }
+
+  bool Match(mobius::Index t, const std::array<mobius::Index, 3>& vertices,
+    const Eigen::Vector3d& weights, Eigen::Vector3d& ordered) const
+  {
+    std::array<bool, 3> used = { false, false, false };
+    for (int k = 0; k < 3; ++k)
+    {
+      int j = 0;
+      while (j < 3 && (used[j] || vertices[j] != this->Rows(t, k)))
+      {
+        ++j;
+      }
+      if (j == 3)
+      {
+        return false;
+      }
+      used[j] = true;
+      ordered[k] = weights[j];
+    }
+    return true;
+  }
+
+  const mobius::Triangles& Rows;
+  std::map<std::array<mobius::Index, 3>, mobius::Index> Lookup;
+};
+
+// mobius-register's OUT.csv: source_vertex, target_triangle, target_vertex_0..2,
+// barycentric_0..2, mapped_x..z.
+bool ReadMap(const std::string& path, const mobius::Points& points,
+  const mobius::Triangles& triangles, std::vector<mobius::SurfacePoint>& mapped,
+  std::string& error)
+{
+  std::ifstream file(path);
+  if (!file)
+  {
+    error = path + ": cannot open the file for reading";
+    return false;
+  }
+  // Columns by name, so that added or reordered columns do not matter.
+  const std::array<const char*, 8> names = { "source_vertex", "target_triangle", "target_vertex_0",
+    "target_vertex_1", "target_vertex_2", "barycentric_0", "barycentric_1", "barycentric_2" };
+  std::array<size_t, 8> column;
+  std::string line;
+  std::getline(file, line);
+  const std::vector<std::string> header = Fields(line);
+  for (size_t k = 0; k < names.size(); ++k)
+  {
+    column[k] = std::find(header.begin(), header.end(), names[k]) - header.begin();
+    if (column[k] == header.size())
+    {
+      error = path + ": not a mobius-register CSV (no column " + names[k] + " in the first line)";
+      return false;
+    }
+  }
+  const size_t columns = header.size();
+  TriangleFinder finder(triangles);
+  mobius::Index lineNumber = 1;
+  while (std::getline(file, line))
+  {
+    ++lineNumber;
+    if (line.empty() || line == "\r")
+    {
+      continue;
+    }
+    const std::string where = path + " line " + std::to_string(lineNumber) + ": ";
+    const std::vector<std::string> fields = Fields(line);
+    if (fields.size() != columns)
+    {
+      error = where + "expected " + std::to_string(columns) + " columns, found " +
+        std::to_string(fields.size());
+      return false;
+    }
+    mobius::Index source = 0, triangle = 0;
+    std::array<mobius::Index, 3> vertices;
+    Eigen::Vector3d weights;
+    bool ok = ParseIndex(fields[column[0]], source) && ParseIndex(fields[column[1]], triangle);
+    for (int k = 0; k < 3; ++k)
+    {
+      ok = ok && ParseIndex(fields[column[2 + k]], vertices[k]) &&
+        ParseNumber(fields[column[5 + k]], weights[k]);
+    }
+    if (!ok)
+    {
+      error = where + "not a row of numbers";
+      return false;
+    }
+    if (source != static_cast<mobius::Index>(mapped.size()))
+    {
+      error = where + "source vertex " + std::to_string(source) + " where " +
+        std::to_string(mapped.size()) + " was expected (rows must be in source vertex order)";
+      return false;
+    }
+    for (mobius::Index v : vertices)
+    {
+      if (v < 0 || v >= points.rows())
+      {
+        error = where + "target vertex " + std::to_string(v) + " is out of range (TARGET has " +
+          std::to_string(points.rows()) + " vertices)";
+        return false;
+      }
+    }
+    mobius::SurfacePoint point;
+    point.Triangle = finder.Find(triangle, vertices, weights, point.Barycentric);
+    if (point.Triangle < 0)
+    {
+      std::ostringstream message;
+      message << where << "target triangle " << triangle << " (vertices " << vertices[0] << ", "
+              << vertices[1] << ", " << vertices[2]
+              << ") is not a triangle of TARGET; was the map computed to this target?";
+      error = message.str();
+      return false;
+    }
+    mapped.push_back(point);
+  }
+  if (mapped.empty())
+  {
+    error = path + ": no rows";
+    return false;
+  }
+  return true;
+}
+
+// --truth FILE: per source vertex a target vertex, or a triangle and three weights.
+bool ReadTruth(const std::string& path, const mobius::Points& points,
+  const mobius::Triangles& triangles, std::vector<mobius::Index>& vertices,
+  std::vector<mobius::SurfacePoint>& surfacePoints, std::string& error)
+{
+  std::ifstream file(path);
+  if (!file)
+  {
+    error = path + ": cannot open the file for reading";
+    return false;
+  }
+  std::vector<mobius::SurfacePoint> entries; // Triangle < 0: a vertex, in Barycentric[0]
+  std::string line;
+  mobius::Index lineNumber = 0;
+  bool anyPoint = false;
+  while (std::getline(file, line))
+  {
+    ++lineNumber;
+    const std::vector<std::string> fields = Fields(line);
+    if (fields.empty() || fields[0][0] == '#')
+    {
+      continue;
+    }
+    const std::string where = path + " line " + std::to_string(lineNumber) + ": ";
+    mobius::SurfacePoint entry;
+    mobius::Index index = 0;
+    if (fields.size() == 1 && ParseIndex(fields[0], index))
+    {
+      if (index < 0 || index >= points.rows())
+      {
+        error = where + "target vertex " + std::to_string(index) + " is out of range (TARGET has " +
+          std::to_string(points.rows()) + " vertices)";
+        return false;
+      }
+      entry.Triangle = -1 - index;
+    }
+    else if (fields.size() == 4 && ParseIndex(fields[0], index) &&
+      ParseNumber(fields[1], entry.Barycentric[0]) &&
+      ParseNumber(fields[2], entry.Barycentric[1]) && ParseNumber(fields[3], entry.Barycentric[2]))
+    {
+      if (index < 0 || index >= triangles.rows())
+      {
+        error = where + "target triangle " + std::to_string(index) +
+          " is out of range (TARGET has " + std::to_string(triangles.rows()) + " triangles)";
+        return false;
+      }
+      entry.Triangle = index;
+      anyPoint = true;
+    }
+    else
+    {
+      error = where + "expected a target vertex index, or a target triangle index and three "
+                      "barycentric weights";
+      return false;
+    }
+    entries.push_back(entry);
+  }
+  vertices.clear();
+  surfacePoints.clear();
+  if (!anyPoint)
+  {
+    for (const auto& entry : entries)
+    {
+      vertices.push_back(-1 - entry.Triangle);
+    }
+    return true;
+  }
+  // Mixed: a vertex becomes a point of one of its triangles, with weight 1 there.
+  std::vector<mobius::SurfacePoint> star(points.rows());
+  for (mobius::Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      star[triangles(t, k)].Triangle = t;
+      star[triangles(t, k)].Barycentric = Eigen::Vector3d::Unit(k);
+    }
+  }
+  for (const auto& entry : entries)
+  {
+    surfacePoints.push_back(entry.Triangle >= 0 ? entry : star[-1 - entry.Triangle]);
+  }
+  return true;
+}
+
+std::string Number(double value, bool json)
+{
+  if (std::isinf(value))
+  {
+    return json ? "null" : "inf";
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, json ? "%.17g" : "%.4g", value);
+  return text;
+}
+
+std::string Percent(double share)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f%%", 100 * share);
+  return text;
+}
+
+void PrintJsonSummary(const char* name, const mobius::CorrespondenceErrorSummary& summary,
+  bool last)
+{
+  std::cout << "  \"" << name << "\": {\"count\": " << summary.Count
+            << ", \"unreachable\": " << summary.Unreachable
+            << ", \"mean\": " << Number(summary.Mean, true)
+            << ", \"median\": " << Number(summary.Median, true)
+            << ", \"p90\": " << Number(summary.Percentile90, true) << ", \"within\": {";
+  for (size_t k = 0; k < summary.Within.size(); ++k)
+  {
+    std::cout << (k ? ", " : "") << "\"" << mobius::CorrespondenceErrorThresholds[k]
+              << "\": " << Number(summary.Within[k], true);
+  }
+  std::cout << "}}" << (last ? "\n" : ",\n");
+}
+
+void PrintRow(const char* name, const mobius::CorrespondenceErrorSummary& summary)
+{
+  std::cout << "| " << name << " | " << Number(summary.Mean, false) << " | "
+            << Number(summary.Median, false) << " | " << Number(summary.Percentile90, false);
+  for (double share : summary.Within)
+  {
+    std::cout << " | " << Percent(share);
+  }
+  std::cout << " |\n";
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::string> positional;
+  std::string truthPath, errorsPath;
+  bool json = false;
+  mobius::CorrespondenceScoreOptions options;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string argument = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc)
+      {
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    auto count = [&](long long& out) {
+      std::string text;
+      mobius::Index parsed = 0;
+      if (!value(text) || !ParseIndex(text, parsed) || parsed < 0)
+      {
+        return false;
+      }
+      out = parsed;
+      return true;
+    };
+    long long number = 0;
+    if (argument == "-h" || argument == "--help")
+    {
+      std::cout << Usage;
+      return 0;
+    }
+    else if (argument == "--json")
+    {
+      json = true;
+    }
+    else if (argument == "--truth")
+    {
+      if (!value(truthPath))
+      {
+        return UsageError("--truth needs a file");
+      }
+    }
+    else if (argument == "--errors")
+    {
+      if (!value(errorsPath))
+      {
+        return UsageError("--errors needs a file");
+      }
+    }
+    else if (argument == "--max-geodesic")
+    {
+      if (!count(number))
+      {
+        return UsageError("--max-geodesic needs a count (0 for all)");
+      }
+      options.MaximumGeodesicQueries = number;
+    }
+    else if (argument == "--threads")
+    {
+      if (!count(number) || number > 1024)
+      {
+        return UsageError("--threads needs a count (0 for one per core)");
+      }
+      options.NumberOfThreads = static_cast<int>(number);
+    }
+    else if (argument.size() > 1 && argument[0] == '-')
+    {
+      return UsageError("unknown option " + argument);
+    }
+    else
+    {
+      positional.push_back(argument);
+    }
+  }
+  if (positional.size() != 3)
+  {
+    return UsageError("expected SOURCE TARGET MAP.csv, got " + std::to_string(positional.size()) +
+      " file" + (positional.size() == 1 ? "" : "s"));
+  }
+  const std::string& sourcePath = positional[0];
+  const std::string& targetPath = positional[1];
+  const std::string& mapPath = positional[2];
+
+  std::string error;
+  vtkSmartPointer<vtkPolyData> source, target;
+  if (!ReadMesh(sourcePath, source, error) || !ReadMesh(targetPath, target, error))
+  {
+    return Fail(error);
+  }
+  mobius::Points points;
+  mobius::Triangles triangles;
+  if (!ExtractTriangleMesh(target, points, triangles, error))
+  {
+    return Fail(targetPath + ": " + error);
+  }
+  std::vector<mobius::SurfacePoint> mapped;
+  if (!ReadMap(mapPath, points, triangles, mapped, error))
+  {
+    return Fail(error);
+  }
+  const mobius::Index sourceVertices = source->GetNumberOfPoints();
+  if (static_cast<mobius::Index>(mapped.size()) != sourceVertices)
+  {
+    return Fail(mapPath + ": " + std::to_string(mapped.size()) + " rows, but SOURCE (" +
+      sourcePath + ") has " + std::to_string(sourceVertices) + " vertices");
+  }
+
+  std::vector<mobius::Index> truthVertices;
+  std::vector<mobius::SurfacePoint> truthPoints;
+  if (truthPath.empty())
+  {
+    if (sourceVertices != points.rows())
+    {
+      return Fail("the identity ground truth needs as many vertices in SOURCE (" +
+        std::to_string(sourceVertices) + ") as in TARGET (" + std::to_string(points.rows()) +
+        "); give --truth FILE");
+    }
+    for (mobius::Index i = 0; i < sourceVertices; ++i)
+    {
+      truthVertices.push_back(i);
+    }
+  }
+  else
+  {
+    if (!ReadTruth(truthPath, points, triangles, truthVertices, truthPoints, error))
+    {
+      return Fail(error);
+    }
+    const size_t entries = truthPoints.empty() ? truthVertices.size() : truthPoints.size();
+    if (static_cast<mobius::Index>(entries) != sourceVertices)
+    {
+      return Fail(truthPath + ": " + std::to_string(entries) + " entries, but SOURCE (" +
+        sourcePath + ") has " + std::to_string(sourceVertices) + " vertices");
+    }
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  mobius::CorrespondenceScore score;
+  const bool scored = truthPoints.empty()
+    ? mobius::ScoreCorrespondence(points, triangles, mapped, truthVertices, options, score, error)
+    : mobius::ScoreCorrespondence(points, triangles, mapped, truthPoints, options, score, error);
+  if (!scored)
+  {
+    return Fail(targetPath + ": " + error);
+  }
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  if (!errorsPath.empty())
+  {
+    std::ofstream out(errorsPath);
+    out << "source_vertex,euclidean,geodesic\n";
+    out.precision(10);
+    for (mobius::Index i = 0; i < sourceVertices; ++i)
+    {
+      out << i << ',' << score.Euclidean[i] << ',';
+      if (!std::isnan(score.Geodesic[i]))
+      {
+        out << score.Geodesic[i];
+      }
+      out << '\n';
+    }
+    if (!out)
+    {
+      return Fail(errorsPath + ": cannot write the file");
+    }
+  }
+
+  if (json)
+  {
+    std::string truthName;
+    for (char c : truthPath.empty() ? std::string("identity") : truthPath)
+    {
+      if (c == '"' || c == '\\')
+      {
+        truthName += '\\';
+      }
+      truthName += c;
+    }
+    std::cout << "{\n  \"source_vertices\": " << sourceVertices
+              << ",\n  \"target_vertices\": " << points.rows()
+              << ",\n  \"target_triangles\": " << triangles.rows()
+              << ",\n  \"target_area\": " << Number(score.TargetArea, true)
+              << ",\n  \"truth\": \"" << truthName << "\""
+              << ",\n  \"geodesic_method\": \"edge paths\""
+              << ",\n  \"seconds\": " << Number(seconds, true) << ",\n";
+    PrintJsonSummary("euclidean", score.EuclideanSummary, false);
+    PrintJsonSummary("geodesic", score.GeodesicSummary, true);
+    std::cout << "}\n";
+    return 0;
+  }
+  std::cout << "| error / √area | mean | median | p90 | ≤ 0.025 | ≤ 0.05 | ≤ 0.1 | ≤ 0.25 |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  PrintRow("Euclidean", score.EuclideanSummary);
+  PrintRow("geodesic", score.GeodesicSummary);
+  std::cout << "\n"
+            << sourceVertices << " source vertices (" << score.GeodesicSummary.Count
+            << " with geodesic errors, edge paths on the target's edges"
+            << (score.GeodesicSummary.Unreachable
+                   ? ", " + std::to_string(score.GeodesicSummary.Unreachable) + " unreachable"
+                   : std::string())
+            << "); target area " << Number(score.TargetArea, false) << ", truth "
+            << (truthPath.empty() ? "identity" : truthPath) << "; " << Number(seconds, false)
+            << " s\n";
+  return 0;
+}
