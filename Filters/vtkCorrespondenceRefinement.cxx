@@ -16,9 +16,8 @@
 
 #include <Eigen/Core>
 
-#include <chrono>
+#include <algorithm>
 #include <future>
-#include <iostream>
 #include <sstream>
 
 vtkStandardNewMacro(vtkCorrespondenceRefinement);
@@ -157,7 +156,6 @@ int vtkCorrespondenceRefinement::RequestData(
       return mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles, this->BasisSize,
         this->NumberOfSamples, surfaces[k], errors[k]);
     };
-    auto T00 = std::chrono::steady_clock::now();
     auto targetReady = std::async(std::launch::async, prepare, 1);
     const bool sourceOk = prepare(0);
     const bool targetOk = targetReady.get();
@@ -169,9 +167,6 @@ int vtkCorrespondenceRefinement::RequestData(
         return 0;
       }
     }
-    auto T0 = std::chrono::steady_clock::now();
-    auto lap = [&](const char* what) { if (getenv("MOBIUS_DEBUG")) { auto t = std::chrono::steady_clock::now(); std::cerr << what << " " << std::chrono::duration<double>(t - T0).count() << std::endl; T0 = t; } };
-    T0 = T00; lap("prepared");
     this->UpdateProgress(0.5);
     if (this->GetAbortExecute())
     {
@@ -187,11 +182,11 @@ int vtkCorrespondenceRefinement::RequestData(
     }
     mobius::ZoomOutParameters parameters;
     parameters.StartSize = this->StartBasisSize;
-    parameters.FinalSize = this->BasisSize;
-    parameters.SizeStep = this->BasisSizeStep;
+    parameters.Growth = this->BasisGrowth;
+    parameters.FinalSize = std::min(this->ScreeningBasisSize, this->BasisSize);
     parameters.FullResolutionIterations = this->FullResolutionIterations;
 
-    // ZoomOut from every candidate; keep the most orthogonal functional map.
+    // Every candidate up to the screening size; the most orthogonal functional map goes on.
     const std::vector<Matrix3> starts = CandidateStarts(inputs[0], this->SearchCandidates);
     const std::vector<mobius::Index>& samples = surfaces[0].Samples;
     std::vector<double> residuals, coverage;
@@ -208,26 +203,31 @@ int vtkCorrespondenceRefinement::RequestData(
         location.Barycentric.maxCoeff(&corner);
         initial[s] = maps[1].Triangles(location.Triangle, corner);
       }
-      mobius::SampleMap refined =
+      mobius::SampleMap screened =
         mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], initial, parameters);
-      lap("candidate");
-      residuals.push_back(refined.OrthogonalityResidual);
-      coverage.push_back(refined.TargetCoverage);
-      if (c == 0 || refined.OrthogonalityResidual < best.OrthogonalityResidual)
+      residuals.push_back(screened.OrthogonalityResidual);
+      coverage.push_back(screened.TargetCoverage);
+      if (c == 0 || screened.OrthogonalityResidual < best.OrthogonalityResidual)
       {
-        best = std::move(refined);
+        best = std::move(screened);
         bestCandidate = static_cast<int>(c);
       }
-      this->UpdateProgress(0.5 + 0.3 * (c + 1) / starts.size());
+      this->UpdateProgress(0.5 + 0.2 * (c + 1) / starts.size());
       if (this->GetAbortExecute())
       {
         return 0;
       }
     }
+    if (parameters.FinalSize < this->BasisSize)
+    {
+      parameters.StartSize = mobius::NextBasisSize(parameters.FinalSize, parameters.Growth);
+      parameters.FinalSize = this->BasisSize;
+      best = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], best.TargetVertex, parameters);
+    }
+    this->UpdateProgress(0.85);
 
     const mobius::DenseMap dense =
       mobius::ExtendToAllVertices(surfaces[0], surfaces[1], best, parameters);
-    lap("extended");
     mobius::vtk::SurfaceLocations locations;
     locations.LocatedTriangles = &maps[1].Triangles;
     locations.Triangle = dense.Triangle;
@@ -259,7 +259,8 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "BasisSize: " << this->BasisSize << "\n";
   os << indent << "StartBasisSize: " << this->StartBasisSize << "\n";
-  os << indent << "BasisSizeStep: " << this->BasisSizeStep << "\n";
+  os << indent << "BasisGrowth: " << this->BasisGrowth << "\n";
+  os << indent << "ScreeningBasisSize: " << this->ScreeningBasisSize << "\n";
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "FullResolutionIterations: " << this->FullResolutionIterations << "\n";
   os << indent << "SearchCandidates: " << this->SearchCandidates << "\n";

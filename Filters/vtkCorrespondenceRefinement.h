@@ -14,7 +14,8 @@
  * Candidates: vtkSO3Register reports several well-separated transforms
  * (`CandidateTransforms`). Symmetric-looking shapes can make a wrong one score best (a
  * person's arms on the wrong side). With `SearchCandidates` on (default), the refinement
- * starts from each candidate, keeps the one whose functional map is closest to orthogonal
+ * starts from each candidate up to `ScreeningBasisSize` functions, continues the one whose
+ * functional map is closest to orthogonal
  * (an isometry has an orthogonal functional map; a start with parts on the wrong side
  * converges to a folded, non-orthogonal one) and reports every candidate's score.
  *
@@ -77,13 +78,22 @@ public:
 
   ///@{
   /**
-   * Basis size of the first ZoomOut iteration (default 20), and the growth per iteration
-   * (default 5).
+   * Basis size of the first ZoomOut iteration (default 4), and the fraction by which the
+   * basis grows per iteration (default 0.15, at least one function).
    */
   vtkSetClampMacro(StartBasisSize, int, 1, 500);
   vtkGetMacro(StartBasisSize, int);
-  vtkSetClampMacro(BasisSizeStep, int, 1, 500);
-  vtkGetMacro(BasisSizeStep, int);
+  vtkSetClampMacro(BasisGrowth, double, 0.0, 10.0);
+  vtkGetMacro(BasisGrowth, double);
+  ///@}
+
+  ///@{
+  /**
+   * Basis size up to which every candidate start is refined before they are compared; the
+   * best one then continues to BasisSize. Default 20.
+   */
+  vtkSetClampMacro(ScreeningBasisSize, int, 1, 500);
+  vtkGetMacro(ScreeningBasisSize, int);
   ///@}
 
   ///@{
@@ -131,8 +141,9 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int BasisSize = 80;
-  int StartBasisSize = 20;
-  int BasisSizeStep = 5;
+  int StartBasisSize = 4;
+  double BasisGrowth = 0.15;
+  int ScreeningBasisSize = 80;
   int NumberOfSamples = 2000;
   int FullResolutionIterations = 2;
   bool SearchCandidates = true;

@@ -4,10 +4,10 @@
 #include "SurfaceSampling.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
 
 namespace mobius
 {
@@ -44,6 +44,41 @@ void ForChunks(Index count, int numberOfThreads, Work&& work)
 }
 }
 
+// Share of the source's sample triangles that face the same way after mapping: the normal of
+// the triangle of images, against the target's normals there, has the sign the triangle's
+// own normal has against the source's normals.
+double OrientationAgreement(const SpectralSurface& source, const SpectralSurface& target,
+  const std::vector<Index>& targetVertex)
+{
+  auto facing = [](const SpectralSurface& surface, Index a, Index b, Index c) {
+    const Eigen::RowVector3d pa = surface.Positions.row(a), pb = surface.Positions.row(b),
+                             pc = surface.Positions.row(c);
+    const Eigen::RowVector3d normal =
+      surface.Normals.row(a) + surface.Normals.row(b) + surface.Normals.row(c);
+    return (pb - pa).cross(pc - pa).dot(normal);
+  };
+  Index agree = 0, counted = 0;
+  for (const auto& triangle : source.SampleTriangles)
+  {
+    const double before = facing(source, source.Samples[triangle[0]],
+      source.Samples[triangle[1]], source.Samples[triangle[2]]);
+    const Index a = targetVertex[triangle[0]], b = targetVertex[triangle[1]],
+                c = targetVertex[triangle[2]];
+    if (before == 0 || a == b || b == c || c == a)
+    {
+      continue; // collapsed images say nothing about orientation
+    }
+    ++counted;
+    agree += (facing(target, a, b, c) > 0) == (before > 0) ? 1 : 0;
+  }
+  return counted > 0 ? static_cast<double>(agree) / counted : 0.0;
+}
+
+int NextBasisSize(int size, double growth)
+{
+  return size + std::max(1, static_cast<int>(size * growth));
+}
+
 double OrthogonalityResidual(const Eigen::MatrixXd& functionalMap)
 {
   const Eigen::Index k = functionalMap.cols();
@@ -59,7 +94,19 @@ bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, in
   {
     return false;
   }
-  if (getenv("MOBIUS_DEBUG")) { std::cerr << "eig " << basis.Eigenvalues.head(10).transpose() << " ... " << basis.Eigenvalues.tail(3).transpose() << std::endl; }
+  surface.Positions = points;
+  surface.Normals = Points::Zero(points.rows(), 3);
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::RowVector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
+                             c = points.row(triangles(t, 2));
+    const Eigen::RowVector3d normal = (b - a).cross(c - a); // |normal| = 2 x area
+    for (int k = 0; k < 3; ++k)
+    {
+      surface.Normals.row(triangles(t, k)) += normal;
+    }
+  }
+  surface.Normals.rowwise().normalize();
   surface.Faces = triangles;
   surface.Embedding = basis.Functions;
   surface.Eigenvalues = basis.Eigenvalues;
@@ -68,6 +115,24 @@ bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, in
   surface.Corners = VertexTriangles(points.rows(), triangles);
   surface.Samples = FarthestPointSamples(points, sampleCount);
   surface.SampleLabels = NearestSampleLabels(points, surface.Neighbors, surface.Samples);
+  // The orientation check runs on a coarser triangulation, of the first eighth of the
+  // samples (farthest-point order makes them an even sampling too): its triangles are
+  // several target-sample spacings wide, so the quantization of the images to target
+  // samples does not scramble their orientation.
+  const std::vector<Index> coarse(surface.Samples.begin(),
+    surface.Samples.begin() + std::max<size_t>(3, surface.Samples.size() / 8));
+  const std::vector<Index> coarseLabels = NearestSampleLabels(points, surface.Neighbors, coarse);
+  surface.SampleTriangles.clear();
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const std::array<Index, 3> labels = { coarseLabels[triangles(t, 0)],
+      coarseLabels[triangles(t, 1)], coarseLabels[triangles(t, 2)] };
+    if (labels[0] >= 0 && labels[0] != labels[1] && labels[1] != labels[2] &&
+      labels[2] != labels[0])
+    {
+      surface.SampleTriangles.push_back(labels);
+    }
+  }
   return true;
 }
 
@@ -76,13 +141,14 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
 {
   const int finalSize = std::min<int>(parameters.FinalSize,
     static_cast<int>(std::min(source.Embedding.cols(), target.Embedding.cols())));
-  const int step = std::max(1, parameters.SizeStep);
+
   const RowMatrix sourceRows = GatherRows(source.Embedding, source.Samples, finalSize);
   const RowMatrix targetRows = GatherRows(target.Embedding, target.Samples, finalSize);
 
   SampleMap result;
   result.TargetVertex = initialTargetVertex;
-  for (int k = std::min(parameters.StartSize, finalSize);; k = std::min(k + step, finalSize))
+  for (int k = std::min(parameters.StartSize, finalSize);;
+       k = std::min(NextBasisSize(k, parameters.Growth), finalSize))
   {
     const RowMatrix a = sourceRows.leftCols(k);
     const Eigen::MatrixXd c =
@@ -96,7 +162,6 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     {
       result.TargetVertex[i] = target.Samples[nearest[i]];
     }
-    if (getenv("MOBIUS_DEBUG")) { std::cerr << "k " << k << " orth " << OrthogonalityResidual(c) << std::endl; }
     if (k == finalSize)
     {
       break;
@@ -117,6 +182,7 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
   }
   result.TargetCoverage =
     target.Samples.empty() ? 0.0 : static_cast<double>(covered) / target.Samples.size();
+  result.OrientationAgreement = OrientationAgreement(source, target, result.TargetVertex);
   return result;
 }
 

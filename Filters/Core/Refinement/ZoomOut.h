@@ -16,6 +16,7 @@
 #include "MeshTypes.h"
 #include "SpectralSearch.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ namespace mobius
 /// start.
 struct SpectralSurface
 {
+  Points Positions;     ///< the surface's vertices
+  Points Normals;       ///< area-weighted unit vertex normals
   Triangles Faces;
   RowMatrix Embedding;  ///< n x k eigenfunction values, one row per vertex
   Vector Eigenvalues;   ///< k, ascending, of the unit-area surface
@@ -33,6 +36,9 @@ struct SpectralSurface
   VertexLists Corners;  ///< triangles around each vertex
   std::vector<Index> Samples;      ///< vertex indices, farthest-point order
   std::vector<Index> SampleLabels; ///< per vertex: position in Samples of its nearest sample
+  /// Triangles of samples (positions in Samples), one per mesh triangle whose corners have
+  /// three different nearest samples: a coarse triangulation to check orientation on.
+  std::vector<std::array<Index, 3>> SampleTriangles;
 };
 
 /// Eigenbasis of `basisSize` functions, adjacency and `sampleCount` samples of a closed
@@ -42,9 +48,13 @@ bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, in
 
 struct ZoomOutParameters
 {
-  int StartSize = 20;  ///< basis size of the first iteration
+  /// Basis size of the first iteration. Small: a few smooth functions are all a start with
+  /// whole limbs misplaced can pin down, and growing from there keeps the limbs from locking
+  /// onto their mirror counterparts (measured: starting at 4 rather than 12-20 turns maps
+  /// with 10-15% of the vertices on the wrong limb into maps with none).
+  int StartSize = 4;
   int FinalSize = 80;  ///< basis size of the last (at most the surfaces' basis size)
-  int SizeStep = 5;    ///< growth per iteration
+  double Growth = 0.15; ///< the basis grows by this fraction per iteration (at least by 1)
   int FullResolutionIterations = 2; ///< iterations on all vertices after the extension
   int NumberOfThreads = 0;          ///< 0: one per core
 };
@@ -60,6 +70,9 @@ struct SampleMap
   /// Share of target samples that are the image of some source sample: low when the map
   /// folds several parts of the source onto one part of the target.
   double TargetCoverage = 0;
+  /// Share of sample triangles whose image keeps their orientation (facing the same side of
+  /// the surface): near 1 for an orientation-preserving map, near 0 for a mirror image.
+  double OrientationAgreement = 0;
 };
 
 /// ZoomOut from `initialTargetVertex` (one target vertex per source sample, e.g. read off
@@ -83,6 +96,9 @@ struct DenseMap
 /// projected onto the target triangles around its vertex.
 DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& samples, const ZoomOutParameters& parameters);
+
+/// The basis size after `size` in the schedule: size + max(1, floor(size x growth)).
+int NextBasisSize(int size, double growth);
 
 /// |C^T C - I|_F / sqrt(k).
 double OrthogonalityResidual(const Eigen::MatrixXd& functionalMap);
