@@ -97,6 +97,8 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int OutputGeometry = TARGET;
   int Direction = SOURCE_TO_TARGET;

@@ -90,6 +90,8 @@ protected:
   ~vtkMobiusCenter() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double Tolerance = 1e-10;
   int MaximumNumberOfIterations = 100;

@@ -116,6 +116,8 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int Resolution = 256;
   double SmoothingTime = 5e-4;

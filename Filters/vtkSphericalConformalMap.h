@@ -150,6 +150,8 @@ protected:
   ~vtkSphericalConformalMap() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double TimeStep = 0.4;
   int MaximumNumberOfIterations = 100;

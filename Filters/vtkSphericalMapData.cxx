@@ -1,15 +1,21 @@
 #include "vtkSphericalMapData.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkDataObject.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <cmath>
+#include <exception>
+#include <new>
 #include <sstream>
 
 namespace mobius
@@ -137,6 +143,41 @@ std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& 
     error = ExtractSurfaceAreas(input, areas);
   }
   return error;
+}
+
+int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
+  const std::string& subject)
+{
+  std::string reason;
+  try
+  {
+    throw;
+  }
+  catch (const std::bad_alloc&)
+  {
+    reason = "out of memory (std::bad_alloc); the input or a setting such as Resolution is "
+             "too large for this machine";
+  }
+  catch (const std::exception& exception)
+  {
+    reason = exception.what();
+  }
+  catch (...)
+  {
+    reason = "an unknown exception";
+  }
+  // A half-built output must not look like a result.
+  for (int port = 0; outputVector && port < outputVector->GetNumberOfInformationObjects(); ++port)
+  {
+    if (vtkDataObject* output =
+          outputVector->GetInformationObject(port)->Get(vtkDataObject::DATA_OBJECT()))
+    {
+      output->Initialize();
+    }
+  }
+  vtkErrorWithObjectMacro(
+    filter, << (subject.empty() ? std::string("Failed") : subject) << ": " << reason << ".");
+  return 0;
 }
 
 void SetPoints(vtkPolyData* output, const Points& points)

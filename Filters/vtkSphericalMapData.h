@@ -16,7 +16,9 @@
 
 #include <string>
 
+class vtkAlgorithm;
 class vtkFieldData;
+class vtkInformationVector;
 class vtkPolyData;
 
 namespace mobius
@@ -48,6 +50,12 @@ std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas);
 /// a point set (no triangles, no areas); otherwise it is an error.
 std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& points,
   Triangles& triangles, Vector& areas);
+
+/// For a filter's RequestData, inside `catch (...)`: reports the exception being handled
+/// (std::bad_alloc as running out of memory) as the filter's error, prefixed by `subject`
+/// when given (a file name), empties the output and returns 0 (RequestData's failure).
+int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
+  const std::string& subject = {});
 
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);

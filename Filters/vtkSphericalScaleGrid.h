@@ -95,6 +95,8 @@ protected:
   ~vtkSphericalScaleGrid() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int Resolution = 256;
   double SmoothingTime = 5e-4;
