@@ -32,7 +32,8 @@
  * `<name>_Target`. Field data: `ClampedPoints`, `MaximumClampDistance` (radians), and the
  * source's field data.
  *
- * Errors: an input missing, empty, not on the unit sphere or without `SurfacePoints`.
+ * Errors: an input missing, empty, not on the unit sphere or without `SurfacePoints`, or
+ * with a triangle that refers to a point id out of range.
  *
  * @sa vtkSO3Register
  */

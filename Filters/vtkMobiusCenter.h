@@ -37,7 +37,8 @@
  * Möbius part.
  *
  * Errors (vtkErrorMacro, no output): empty input, NaN/Inf coordinates, points off the unit
- * sphere, lines/strips/non-triangle polygons, missing or invalid `SurfaceArea`. If the
+ * sphere, lines/strips/non-triangle polygons, triangles referring to a point id out of
+ * range, missing or invalid `SurfaceArea`, running out of memory. If the
  * tolerance is not reached within MaximumNumberOfIterations the result is still produced
  * and a warning gives the |mu| reached.
  *

@@ -193,6 +193,14 @@ int vtkSphericalConformalMap::ComputeOutput(
     return 0;
   }
 
+  // Before anything reads the points through them (vtkTriangleFilter does).
+  std::string error = mobius::vtk::CheckCellPointIds(input);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot map the mesh to the sphere: " << error << ".");
+    return 0;
+  }
+
   // Triangles only: split polygons and strips, drop vertices and lines (with their data).
   vtkSmartPointer<vtkPolyData> surface = input;
   if (NeedsTriangulation(input))
@@ -214,7 +222,7 @@ int vtkSphericalConformalMap::ComputeOutput(
 
   mobius::Points points;
   mobius::Triangles triangles;
-  std::string error = mobius::vtk::ExtractPoints(surface, points);
+  error = mobius::vtk::ExtractPoints(surface, points);
   if (error.empty())
   {
     error = mobius::vtk::ExtractTriangles(surface, triangles);

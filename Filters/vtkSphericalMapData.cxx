@@ -17,6 +17,7 @@
 #include <exception>
 #include <new>
 #include <sstream>
+#include <utility>
 
 namespace mobius
 {
@@ -45,6 +46,40 @@ std::string ExtractPoints(vtkPolyData* input, Points& points)
   return {};
 }
 
+std::string CheckCellPointIds(vtkPolyData* input)
+{
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  const std::pair<vtkCellArray*, const char*> kinds[] = { { input->GetVerts(), "vertex cell" },
+    { input->GetLines(), "line" }, { input->GetPolys(), "polygon" },
+    { input->GetStrips(), "triangle strip" } };
+  for (const auto& kind : kinds)
+  {
+    if (!kind.first)
+    {
+      continue;
+    }
+    const vtkIdType cells = kind.first->GetNumberOfCells();
+    for (vtkIdType c = 0; c < cells; ++c)
+    {
+      vtkIdType npts = 0;
+      const vtkIdType* ids = nullptr;
+      kind.first->GetCellAtId(c, npts, ids);
+      for (vtkIdType k = 0; k < npts; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= numberOfPoints)
+        {
+          std::ostringstream error;
+          error << kind.second << " " << c << " refers to point " << ids[k]
+                << ", but there are " << numberOfPoints << " points (ids 0 to "
+                << numberOfPoints - 1 << ")";
+          return error.str();
+        }
+      }
+    }
+  }
+  return {};
+}
+
 std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles)
 {
   if (input->GetNumberOfLines() > 0 || input->GetNumberOfStrips() > 0)
@@ -68,6 +103,17 @@ std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles)
       error << "polygon " << t << " has " << npts
             << " points; only triangles are accepted (apply vtkTriangleFilter)";
       return error.str();
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      if (ids[k] < 0 || ids[k] >= input->GetNumberOfPoints())
+      {
+        std::ostringstream error;
+        error << "triangle " << t << " refers to point " << ids[k] << ", but there are "
+              << input->GetNumberOfPoints() << " points (ids 0 to "
+              << input->GetNumberOfPoints() - 1 << ")";
+        return error.str();
+      }
     }
     triangles.row(t) << ids[0], ids[1], ids[2];
   }

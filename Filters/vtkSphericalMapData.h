@@ -35,8 +35,13 @@ constexpr double UnitSphereTolerance = 1e-6;
 /// Copies the points; fails on an empty point set or NaN/Inf coordinates.
 std::string ExtractPoints(vtkPolyData* input, Points& points);
 
-/// Copies the polygons, all of which must be triangles; fails on lines, strips and polygons
-/// of other sizes.
+/// Fails if a cell (vertex, line, polygon or strip) refers to a point id outside
+/// [0, number of points): VTK's readers do not check, and every later step would read or
+/// write out of bounds.
+std::string CheckCellPointIds(vtkPolyData* input);
+
+/// Copies the polygons, all of which must be triangles of point ids in range; fails on
+/// lines, strips, polygons of other sizes and ids outside [0, number of points).
 std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles);
 
 /// Fails unless every point is within UnitSphereTolerance of the unit sphere.

@@ -1,5 +1,6 @@
 """mobius-register as a user runs it: the demo, two meshes, --json, and every kind of
-failure with its message, exit code and no partial or overwritten output."""
+failure (hostile files included) with its message, exit code and no partial or overwritten
+output."""
 import json
 import os
 import shutil
@@ -94,6 +95,29 @@ check(os.path.getsize(os.path.join(work, "mine.vtp.off")) == os.path.getsize(han
 no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
 expect_failure([hand, hand, "-o", "out6", "--png", "out6.png", "--resolution", "32"],
                ["out6.png", "X display"], ["out6"], env=no_display)
+
+# Hostile files: each is one line naming the file and the problem, exit status 1, no output
+# (and no crash: VTK's readers would write out of bounds on several of them).
+tetra_v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+ply_header = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+              "0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+hostile = {
+    "zero.obj": (tetra_v + "f 0 1 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n", ["invalid vertex index '0'"]),
+    "far.obj": (tetra_v + "f 1 3 2\nf 1 2 99999\nf 2 3 4\nf 1 4 3\n", ["refers to vertex 99999"]),
+    "nan.obj": ("v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n",
+                ["vertex 2 (line 3) has a NaN or infinite coordinate"]),
+    "far.ply": (ply_header + "3 0 2 1\n3 0 1 1000000\n3 1 2 3\n3 0 3 2\n", ["face 1 refers to vertex 1000000"]),
+    "negative.ply": (ply_header + "3 0 2 1\n3 0 1 -5\n3 1 2 3\n3 0 3 2\n", ["face 1 refers to vertex -5"]),
+    "past.vtk": ("# vtk DataFile Version 3.0\nhostile\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+                 "0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 16\n3 0 2 1\n3 0 1 3\n3 1 2 7\n3 0 3 2\n",
+                 ["polygon 2 refers to point 7"]),
+}
+for number, (name, (text, words)) in enumerate(sorted(hostile.items())):
+    with open(os.path.join(work, name), "w") as f:
+        f.write(text)
+    for arguments in ([name, hand], [hand, name]):
+        expect_failure([*arguments, "-o", f"hostile{number}"], [name, *words], [f"hostile{number}"])
 
 print(f"{len(failures)} failed")
 sys.exit(1 if failures else 0)
