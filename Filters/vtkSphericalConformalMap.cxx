@@ -9,6 +9,7 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -352,6 +353,16 @@ int vtkSphericalConformalMap::ComputeOutput(
     surfacePoints->SetTuple3(i, points(i, 0), points(i, 1), points(i, 2));
   }
   output->GetPointData()->AddArray(surfacePoints);
+  // Repairs drop, merge and add points: results must still name the input's (the file's)
+  // vertices, so every later filter passes this array on.
+  vtkNew<vtkIdTypeArray> inputPointIds;
+  inputPointIds->SetName(mobius::vtk::InputPointIdArrayName);
+  inputPointIds->SetNumberOfTuples(points.rows());
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    inputPointIds->SetValue(i, static_cast<vtkIdType>(provenance.Points[i]));
+  }
+  output->GetPointData()->AddArray(inputPointIds);
   vtkNew<vtkDoubleArray> areas;
   areas->SetName(mobius::vtk::SurfaceAreaArrayName);
   areas->SetNumberOfTuples(triangles.rows());

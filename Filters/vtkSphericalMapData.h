@@ -28,6 +28,9 @@ namespace vtk
 /// Array names of the data contract; part of the public API, keep them stable.
 constexpr const char* SurfacePointsArrayName = "SurfacePoints";
 constexpr const char* SurfaceAreaArrayName = "SurfaceArea";
+/// Point array of vtkSphericalConformalMap's output: the index of the point in the filter's
+/// input (-1 for a point a repair created), i.e. the vertex number in the mesh file.
+constexpr const char* InputPointIdArrayName = "InputPointId";
 
 /// Distance from 1 that a spherical map's point radius may have.
 constexpr double UnitSphereTolerance = 1e-6;
