@@ -163,7 +163,8 @@ def expect_numbering(pairs, expected_source, counterpart, label, fraction=0.98):
     sources = [s for s, _ in pairs]
     check(sorted(sources) == sorted(expected_source), f"{label}: source_vertex is not the file's numbering")
     matched = sum(1 for s, t in pairs if s >= 0 and t == counterpart(s))
-    check(matched >= fraction * len(pairs), f"{label}: {matched} of {len(pairs)} vertices map to their counterpart")
+    check(matched >= fraction * len(pairs),
+          f"{label}: {matched} of {len(pairs)} vertices map to their counterpart")
 
 
 points, faces = read_off(hand)
@@ -178,7 +179,8 @@ with open(os.path.join(work, "hand-vt.obj"), "w") as f:
 expect_numbering(correspondence("hand-vt.obj", hand), range(n), lambda s: s, "OBJ with vt/vn as source")
 expect_numbering(correspondence(hand, "hand-vt.obj"), range(n), lambda s: s, "OBJ with vt/vn as target")
 # An unused vertex in front: file vertex s + 1 is hand vertex s.
-write_off(os.path.join(work, "hand-unused.off"), ["5 5 5"] + points, [[a + 1, b + 1, c + 1] for a, b, c in faces])
+write_off(os.path.join(work, "hand-unused.off"), ["5 5 5"] + points,
+          [[a + 1, b + 1, c + 1] for a, b, c in faces])
 expect_numbering(correspondence("hand-unused.off", hand), range(1, n + 1), lambda s: s - 1, "unused vertex")
 # A separate tetrahedron in front, dropped by --keep-largest-component.
 tetra = ["3 3 3", "3.1 3 3", "3 3.1 3", "3 3 3.1"]

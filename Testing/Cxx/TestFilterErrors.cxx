@@ -21,7 +21,8 @@ namespace
 using mobius_test::BumpyMesh;
 
 // A copy of `mesh` whose polygon `cell` has its vertex `corner` replaced by `id`.
-vtkSmartPointer<vtkPolyData> WithPointId(vtkPolyData* mesh, vtkIdType cell, int corner, vtkIdType id)
+vtkSmartPointer<vtkPolyData> WithPointId(
+  vtkPolyData* mesh, vtkIdType cell, int corner, vtkIdType id)
 {
   auto result = vtkSmartPointer<vtkPolyData>::New();
   result->DeepCopy(mesh);

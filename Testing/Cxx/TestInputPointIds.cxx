@@ -74,7 +74,8 @@ int TestNumberingThroughThePipeline()
     reversed[k] = n - 1 - k;
   }
   vtkSmartPointer<vtkPolyData> centered[2];
-  vtkSmartPointer<vtkPolyData> inputs[2] = { Renumbered(mesh, shifted), Renumbered(mesh, reversed) };
+  vtkSmartPointer<vtkPolyData> inputs[2] = { Renumbered(mesh, shifted),
+    Renumbered(mesh, reversed) };
   for (int k = 0; k < 2; ++k)
   {
     vtkNew<vtkSphericalConformalMap> map;

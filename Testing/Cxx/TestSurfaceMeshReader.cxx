@@ -61,7 +61,8 @@ void WriteText(const std::string& fileName, const std::string& text)
 
 const char* const TetraVertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
 
-std::string AsciiPly(const std::string& faces, const std::string& vertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+std::string AsciiPly(
+  const std::string& faces, const std::string& vertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
 {
   return "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
          "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
@@ -75,8 +76,10 @@ int TestHostileFiles(const std::string& dir)
 {
   int failures = 0;
   WriteText(dir + "/zero.obj", std::string(TetraVertices) + "f 0 1 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
-  failures += ExpectError(dir + "/zero.obj", "invalid vertex index '0' (OBJ numbers vertices from 1)");
-  WriteText(dir + "/far.obj", std::string(TetraVertices) + "f 1 3 2\nf 1 2 99999\nf 2 3 4\nf 1 4 3\n");
+  failures +=
+    ExpectError(dir + "/zero.obj", "invalid vertex index '0' (OBJ numbers vertices from 1)");
+  WriteText(
+    dir + "/far.obj", std::string(TetraVertices) + "f 1 3 2\nf 1 2 99999\nf 2 3 4\nf 1 4 3\n");
   failures += ExpectError(dir + "/far.obj", "face 1 (line 6) refers to vertex 99999");
   WriteText(dir + "/before.obj", std::string(TetraVertices) + "f 1 3 2\nf -1 -2 -5\n");
   failures += ExpectError(dir + "/before.obj", "invalid vertex index '-5'");
@@ -85,7 +88,8 @@ int TestHostileFiles(const std::string& dir)
   WriteText(dir + "/line.obj", std::string(TetraVertices) + "f 1 3\n");
   failures += ExpectError(dir + "/line.obj", "fewer than 3 vertices");
   WriteText(dir + "/nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n");
-  failures += ExpectError(dir + "/nan.obj", "vertex 2 (line 3) has a NaN or infinite coordinate 'nan'");
+  failures +=
+    ExpectError(dir + "/nan.obj", "vertex 2 (line 3) has a NaN or infinite coordinate 'nan'");
   WriteText(dir + "/inf.obj", "v 0 0 0\nv 1 0 -inf\nf 1 2 1\n");
   failures += ExpectError(dir + "/inf.obj", "vertex 1 (line 2) has a NaN or infinite coordinate");
   WriteText(dir + "/short.obj", "v 0 0\nf 1 1 1\n");
@@ -102,6 +106,47 @@ int TestHostileFiles(const std::string& dir)
   WriteText(dir + "/nan.ply",
     AsciiPly("3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "0 0 0\n1 0 0\n0 nan 0\n0 0 1\n"));
   failures += ExpectError(dir + "/nan.ply", "vertex 2 has a NaN or infinite coordinate y");
+
+  // Binary, both byte orders: a tetrahedron whose last face has index `last`.
+  for (const bool big : { false, true })
+  {
+    for (const int last : { 3, 4, -1 })
+    {
+      std::string bytes = std::string("ply\nformat ") +
+        (big ? "binary_big_endian" : "binary_little_endian") +
+        " 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+      auto put = [&](const void* value, size_t size) {
+        std::string word(static_cast<const char*>(value), size);
+        if (big) // this test runs on little-endian machines only (x86-64, arm64)
+        {
+          std::reverse(word.begin(), word.end());
+        }
+        bytes += word;
+      };
+      const float coordinates[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+      for (float c : coordinates)
+      {
+        put(&c, sizeof c);
+      }
+      const int faces[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, last } };
+      for (const auto& face : faces)
+      {
+        bytes += '\3';
+        for (int index : face)
+        {
+          put(&index, sizeof index);
+        }
+      }
+      const std::string name =
+        dir + "/binary" + (big ? "-big" : "-little") + std::to_string(last) + ".ply";
+      WriteText(name, bytes);
+      failures += last == 3
+        ? ExpectMesh(name, 4, 4)
+        : ExpectError(
+            name, "face 3 refers to vertex " + std::to_string(last) + ", but the file has 4");
+    }
+  }
 
   WriteText(dir + "/past.vtk", "# vtk DataFile Version 3.0\nhostile\nASCII\nDATASET POLYDATA\n"
                                "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 16\n"
