@@ -55,14 +55,24 @@ double DemoMeanError(vtkPolyData* correspondence, vtkPolyData* target)
   mass->Update();
   const double scale = std::sqrt(mass->GetSurfaceArea());
   vtkDataArray* mapped = correspondence->GetPointData()->GetArray("MappedPoints");
+  // The counterpart of source file vertex i is target vertex i; the map's point i is source
+  // file vertex InputPointId[i].
+  vtkDataArray* sourceIds = correspondence->GetPointData()->GetArray("InputPointId");
   double sum = 0;
-  const vtkIdType n = correspondence->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < n; ++i)
+  vtkIdType counted = 0;
+  for (vtkIdType i = 0; i < correspondence->GetNumberOfPoints(); ++i)
   {
+    const vtkIdType counterpart =
+      sourceIds ? static_cast<vtkIdType>(sourceIds->GetComponent(i, 0)) : i;
+    if (counterpart < 0) // a point a repair created has no counterpart
+    {
+      continue;
+    }
     double a[3], b[3];
     mapped->GetTuple(i, a);
-    target->GetPoint(i, b);
+    target->GetPoint(counterpart, b);
     sum += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    ++counted;
   }
-  return n > 0 ? sum / n / scale : 0.0;
+  return counted > 0 ? sum / counted / scale : 0.0;
 }

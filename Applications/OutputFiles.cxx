@@ -102,14 +102,19 @@ bool OutputFiles::WriteMesh(vtkPolyData* correspondence, std::string& error)
   return true;
 }
 
-bool OutputFiles::WriteCsv(vtkPolyData* correspondence, vtkPolyData* targetMap, std::string& error)
+bool OutputFiles::WriteCsv(vtkPolyData* correspondence, std::string& error)
 {
   std::ofstream csv(this->Temporary(this->CsvPath));
   this->Written.push_back(this->CsvPath);
-  vtkDataArray* cells = correspondence->GetPointData()->GetArray("TargetCellId");
-  vtkDataArray* weights = correspondence->GetPointData()->GetArray("TargetBarycentric");
-  vtkDataArray* mapped = correspondence->GetPointData()->GetArray("MappedPoints");
-  if (!csv || !cells || !weights || !mapped)
+  vtkPointData* data = correspondence->GetPointData();
+  vtkDataArray* cells = data->GetArray("TargetCellId");
+  vtkDataArray* weights = data->GetArray("TargetBarycentric");
+  vtkDataArray* mapped = data->GetArray("MappedPoints");
+  // Vertices are named by their number in the mesh files, not by their place in the maps,
+  // which repairs (and the readers) may have renumbered.
+  vtkDataArray* sourceIds = data->GetArray("InputPointId");
+  vtkDataArray* targetIds = data->GetArray("TargetInputPointIds");
+  if (!csv || !cells || !weights || !mapped || !sourceIds || !targetIds)
   {
     error = this->CsvPath + ": cannot write the file";
     return false;
@@ -119,11 +124,12 @@ bool OutputFiles::WriteCsv(vtkPolyData* correspondence, vtkPolyData* targetMap, 
   csv.precision(17);
   for (vtkIdType i = 0; i < correspondence->GetNumberOfPoints(); ++i)
   {
-    const auto cell = static_cast<vtkIdType>(cells->GetComponent(i, 0));
-    vtkIdType npts;
-    const vtkIdType* ids;
-    targetMap->GetCellPoints(cell, npts, ids);
-    csv << i << ',' << cell << ',' << ids[0] << ',' << ids[1] << ',' << ids[2];
+    csv << static_cast<vtkIdType>(sourceIds->GetComponent(i, 0)) << ','
+        << static_cast<vtkIdType>(cells->GetComponent(i, 0));
+    for (int k = 0; k < 3; ++k)
+    {
+      csv << ',' << static_cast<vtkIdType>(targetIds->GetComponent(i, k));
+    }
     for (int k = 0; k < 3; ++k)
     {
       csv << ',' << weights->GetComponent(i, k);

@@ -24,8 +24,9 @@ public:
   /// VTK 9.2's appended data back).
   bool WriteMesh(vtkPolyData* correspondence, std::string& error);
   /// Per source vertex: target triangle, its three vertices, barycentric coordinates and
-  /// the mapped position.
-  bool WriteCsv(vtkPolyData* correspondence, vtkPolyData* targetMap, std::string& error);
+  /// the mapped position. Vertices are numbered as in the mesh files (InputPointId,
+  /// TargetInputPointIds); -1 is a vertex --fill-holes created.
+  bool WriteCsv(vtkPolyData* correspondence, std::string& error);
   /// The picture, rendered by RenderCorrespondencePicture into a temporary file.
   bool WritePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence, std::string& error);
 

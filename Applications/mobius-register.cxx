@@ -151,7 +151,7 @@ int main(int argc, char* argv[])
     return Fail(error);
   }
   if (!outputs.WriteMesh(result.Correspondence, error) ||
-    !outputs.WriteCsv(result.Correspondence, result.TargetCentered, error) ||
+    !outputs.WriteCsv(result.Correspondence, error) ||
     !outputs.WritePicture(result.Aligned, result.Correspondence, error) || !outputs.Commit(error))
   {
     return Fail(error);

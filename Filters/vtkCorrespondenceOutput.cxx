@@ -95,7 +95,10 @@ void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
       continue;
     }
     auto transferred = Transfer(array, locations);
-    if (outPD->HasArray(array->GetName()))
+    // The target's InputPointId always gets the suffix: under its own name it would pass
+    // for the source's numbering.
+    if (outPD->HasArray(array->GetName()) ||
+      std::string(array->GetName()) == InputPointIdArrayName)
     {
       transferred->SetName((std::string(array->GetName()) + "_Target").c_str());
     }
@@ -104,6 +107,26 @@ void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
   outPD->AddArray(cellIds);
   outPD->AddArray(barycentric);
   outPD->AddArray(mapped);
+  // TargetCellId names a triangle of the target map, whose point numbering repairs changed:
+  // give its vertices in the target's input (file) numbering too.
+  vtkDataArray* targetIds = locatedMesh->GetPointData()->GetArray(InputPointIdArrayName);
+  if (targetIds && targetIds->GetNumberOfComponents() == 1 &&
+    targetIds->GetNumberOfTuples() == locatedMesh->GetNumberOfPoints())
+  {
+    vtkNew<vtkIdTypeArray> cornerIds;
+    cornerIds->SetName("TargetInputPointIds");
+    cornerIds->SetNumberOfComponents(3);
+    cornerIds->SetNumberOfTuples(static_cast<vtkIdType>(locations.Triangle.size()));
+    for (size_t q = 0; q < locations.Triangle.size(); ++q)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        cornerIds->SetTypedComponent(static_cast<vtkIdType>(q), k,
+          static_cast<vtkIdType>(targetIds->GetComponent(Vertex(locations, q, k), 0)));
+      }
+    }
+    outPD->AddArray(cornerIds);
+  }
 
   vtkNew<vtkPoints> outputPoints;
   outputPoints->SetDataTypeToDouble();

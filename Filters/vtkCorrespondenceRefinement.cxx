@@ -119,6 +119,22 @@ int vtkCorrespondenceRefinement::FillInputPortInformation(int, vtkInformation* i
 
 //------------------------------------------------------------------------------
 int vtkCorrespondenceRefinement::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // No exception may leave the pipeline (in ParaView it would end the application): running
+  // out of memory, or a failure in a worker thread, becomes this filter's error.
+  try
+  {
+    return this->ComputeOutput(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    return mobius::vtk::ReportException(this, outputVector);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkCorrespondenceRefinement::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* inputs[2] = { vtkPolyData::GetData(inputVector[0]),
@@ -147,7 +163,6 @@ int vtkCorrespondenceRefinement::RequestData(
     }
   }
 
-  try
   {
     // The two eigenbases are independent: compute them side by side.
     mobius::SpectralSurface surfaces[2];
@@ -243,11 +258,6 @@ int vtkCorrespondenceRefinement::RequestData(
       fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
     mobius::vtk::SetFieldValue(
       fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
-  }
-  catch (const std::exception& exception)
-  {
-    vtkErrorMacro(<< "Refinement failed: " << exception.what() << ".");
-    return 0;
   }
   this->UpdateProgress(1.0);
   return 1;

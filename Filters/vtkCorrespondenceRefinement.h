@@ -26,8 +26,8 @@
  *
  * Output: exactly as vtkDenseCorrespondence (SOURCE_TO_TARGET): the source's connectivity
  * with points on the target surface (or the source surface, `OutputGeometry`); point
- * arrays `MappedPoints`, `TargetCellId`, `TargetBarycentric`, the target's point arrays
- * transferred, the source's passed through. Field data (besides the source's):
+ * arrays `MappedPoints`, `TargetCellId`, `TargetBarycentric`, `TargetInputPointIds`, the
+ * target's point arrays transferred, the source's passed through (with `InputPointId`). Field data (besides the source's):
  * - `RefinementCandidate`: which candidate (0 = vtkSO3Register's best) was kept;
  * - `CandidateOrthogonalityResiduals`, `CandidateTargetCoverage` (one value per candidate
  *   tried, in candidate order): |C^T C - I|_F / sqrt(k) of its sampled functional map and the
@@ -139,6 +139,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int BasisSize = 80;
   int StartBasisSize = 4;

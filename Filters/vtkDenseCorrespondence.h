@@ -25,14 +25,19 @@
  * at its corresponding position on the target surface (the paper's Figure 10); SOURCE is
  * the source surface itself (its `SurfacePoints`). Point data: every array of the source
  * passed through; `MappedPoints` (3 doubles, the corresponding target-surface positions);
- * `TargetCellId` (id type); `TargetBarycentric` (3 doubles); every target point array
+ * `TargetCellId` (id type); `TargetBarycentric` (3 doubles); `TargetInputPointIds` (3 ids,
+ * when the target has vtkSphericalConformalMap's `InputPointId`: the target triangle's
+ * vertices in the target's input, i.e. file, numbering); every target point array
  * transferred: floating-point arrays interpolated with the barycentric coordinates,
  * integer, string and other arrays (categorical data) take the value of the nearest target
  * vertex. A transferred array whose name the source already uses is renamed
- * `<name>_Target`. Field data: `ClampedPoints`, `MaximumClampDistance` (radians), and the
- * source's field data.
+ * `<name>_Target`: the source's `InputPointId` (its input vertex numbers) passes through,
+ * and `InputPointId_Target` (always so named) is the input number of the nearest target
+ * vertex. Field data: `ClampedPoints`, `MaximumClampDistance` (radians), and the source's
+ * field data.
  *
- * Errors: an input missing, empty, not on the unit sphere or without `SurfacePoints`.
+ * Errors: an input missing, empty, not on the unit sphere or without `SurfacePoints`, or
+ * with a triangle that refers to a point id out of range.
  *
  * @sa vtkSO3Register
  */
@@ -97,6 +102,8 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int OutputGeometry = TARGET;
   int Direction = SOURCE_TO_TARGET;

@@ -37,7 +37,8 @@
  * Möbius part.
  *
  * Errors (vtkErrorMacro, no output): empty input, NaN/Inf coordinates, points off the unit
- * sphere, lines/strips/non-triangle polygons, missing or invalid `SurfaceArea`. If the
+ * sphere, lines/strips/non-triangle polygons, triangles referring to a point id out of
+ * range, missing or invalid `SurfaceArea`, running out of memory. If the
  * tolerance is not reached within MaximumNumberOfIterations the result is still produced
  * and a warning gives the |mu| reached.
  *
@@ -90,6 +91,8 @@ protected:
   ~vtkMobiusCenter() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double Tolerance = 1e-10;
   int MaximumNumberOfIterations = 100;

@@ -62,6 +62,22 @@ int vtkSO3Register::FillInputPortInformation(int port, vtkInformation* info)
 
 //------------------------------------------------------------------------------
 int vtkSO3Register::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // No exception may leave the pipeline (in ParaView it would end the application): running
+  // out of memory, or a failure in a worker thread, becomes this filter's error.
+  try
+  {
+    return this->ComputeOutput(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    return mobius::vtk::ReportException(this, outputVector);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkSO3Register::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* source = vtkPolyData::GetData(inputVector[0]);

@@ -27,8 +27,9 @@
  *   (K tuples each), best first;
  * - `Resolution`, `CorrelationBandwidth` (the bands used by the grid search).
  *
- * Errors: an input that is not a spherical map, missing or invalid `SurfaceArea`,
- * Resolution odd or below 4.
+ * Errors: an input that is not a spherical map (or has a triangle referring to a point id
+ * out of range), missing or invalid `SurfaceArea`, Resolution odd or below 4, running out
+ * of memory (a Resolution too large for the machine).
  *
  * @sa vtkSphericalScaleGrid vtkDenseCorrespondence
  */
@@ -116,6 +117,8 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int Resolution = 256;
   double SmoothingTime = 5e-4;

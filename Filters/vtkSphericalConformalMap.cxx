@@ -9,6 +9,7 @@
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -157,6 +158,22 @@ vtkSphericalConformalMap::vtkSphericalConformalMap() = default;
 
 //------------------------------------------------------------------------------
 int vtkSphericalConformalMap::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // No exception may leave the pipeline (in ParaView it would end the application): running
+  // out of memory, or a failure in a worker thread, becomes this filter's error.
+  try
+  {
+    return this->ComputeOutput(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    return mobius::vtk::ReportException(this, outputVector);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkSphericalConformalMap::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
@@ -174,6 +191,14 @@ int vtkSphericalConformalMap::RequestData(
   if (input->GetNumberOfPolys() == 0 && input->GetNumberOfStrips() == 0)
   {
     vtkErrorMacro(<< "Cannot map the mesh to the sphere: the input has no triangles.");
+    return 0;
+  }
+
+  // Before anything reads the points through them (vtkTriangleFilter does).
+  std::string error = mobius::vtk::CheckCellPointIds(input);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot map the mesh to the sphere: " << error << ".");
     return 0;
   }
 
@@ -198,7 +223,7 @@ int vtkSphericalConformalMap::RequestData(
 
   mobius::Points points;
   mobius::Triangles triangles;
-  std::string error = mobius::vtk::ExtractPoints(surface, points);
+  error = mobius::vtk::ExtractPoints(surface, points);
   if (error.empty())
   {
     error = mobius::vtk::ExtractTriangles(surface, triangles);
@@ -328,6 +353,16 @@ int vtkSphericalConformalMap::RequestData(
     surfacePoints->SetTuple3(i, points(i, 0), points(i, 1), points(i, 2));
   }
   output->GetPointData()->AddArray(surfacePoints);
+  // Repairs drop, merge and add points: results must still name the input's (the file's)
+  // vertices, so every later filter passes this array on.
+  vtkNew<vtkIdTypeArray> inputPointIds;
+  inputPointIds->SetName(mobius::vtk::InputPointIdArrayName);
+  inputPointIds->SetNumberOfTuples(points.rows());
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+  {
+    inputPointIds->SetValue(i, static_cast<vtkIdType>(provenance.Points[i]));
+  }
+  output->GetPointData()->AddArray(inputPointIds);
   vtkNew<vtkDoubleArray> areas;
   areas->SetName(mobius::vtk::SurfaceAreaArrayName);
   areas->SetNumberOfTuples(triangles.rows());

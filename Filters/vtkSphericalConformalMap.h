@@ -25,6 +25,11 @@
  * carrying:
  * - point data `SurfacePoints` (3 doubles): the vertex on the original surface;
  * - cell data `SurfaceArea` (double): the triangle's area on the original surface;
+ * - point data `InputPointId` (id type): the index of the point in this filter's input
+ *   (for a mesh from vtkSurfaceMeshReader, the vertex number in the file), -1 for a point
+ *   FillHoles created. Repairs drop unused points and merge duplicates, so output point i
+ *   is in general not input point i; the later filters pass this array on, so results can
+ *   name the input's vertices;
  * - every point and cell array of the input (points and triangles created by FillHoles
  *   get zero values);
  * - field data: `ConformalFlowIterations`, `ConformalFlowRelativeChange`,
@@ -150,6 +155,8 @@ protected:
   ~vtkSphericalConformalMap() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double TimeStep = 0.4;
   int MaximumNumberOfIterations = 100;

@@ -1,17 +1,24 @@
 #include "vtkSphericalMapData.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkDataObject.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <cmath>
+#include <exception>
+#include <new>
 #include <sstream>
+#include <utility>
 
 namespace mobius
 {
@@ -40,6 +47,40 @@ std::string ExtractPoints(vtkPolyData* input, Points& points)
   return {};
 }
 
+std::string CheckCellPointIds(vtkPolyData* input)
+{
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  const std::pair<vtkCellArray*, const char*> kinds[] = { { input->GetVerts(), "vertex cell" },
+    { input->GetLines(), "line" }, { input->GetPolys(), "polygon" },
+    { input->GetStrips(), "triangle strip" } };
+  for (const auto& kind : kinds)
+  {
+    if (!kind.first)
+    {
+      continue;
+    }
+    const vtkIdType cells = kind.first->GetNumberOfCells();
+    for (vtkIdType c = 0; c < cells; ++c)
+    {
+      vtkIdType npts = 0;
+      const vtkIdType* ids = nullptr;
+      kind.first->GetCellAtId(c, npts, ids);
+      for (vtkIdType k = 0; k < npts; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= numberOfPoints)
+        {
+          std::ostringstream error;
+          error << kind.second << " " << c << " refers to point " << ids[k]
+                << ", but there are " << numberOfPoints << " points (ids 0 to "
+                << numberOfPoints - 1 << ")";
+          return error.str();
+        }
+      }
+    }
+  }
+  return {};
+}
+
 std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles)
 {
   if (input->GetNumberOfLines() > 0 || input->GetNumberOfStrips() > 0)
@@ -63,6 +104,17 @@ std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles)
       error << "polygon " << t << " has " << npts
             << " points; only triangles are accepted (apply vtkTriangleFilter)";
       return error.str();
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      if (ids[k] < 0 || ids[k] >= input->GetNumberOfPoints())
+      {
+        std::ostringstream error;
+        error << "triangle " << t << " refers to point " << ids[k] << ", but there are "
+              << input->GetNumberOfPoints() << " points (ids 0 to "
+              << input->GetNumberOfPoints() - 1 << ")";
+        return error.str();
+      }
     }
     triangles.row(t) << ids[0], ids[1], ids[2];
   }
@@ -163,6 +215,41 @@ std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints)
     surfacePoints.row(i) << p[0], p[1], p[2];
   }
   return {};
+}
+
+int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
+  const std::string& subject)
+{
+  std::string reason;
+  try
+  {
+    throw;
+  }
+  catch (const std::bad_alloc&)
+  {
+    reason = "out of memory (std::bad_alloc); the input or a setting such as Resolution is "
+             "too large for this machine";
+  }
+  catch (const std::exception& exception)
+  {
+    reason = exception.what();
+  }
+  catch (...)
+  {
+    reason = "an unknown exception";
+  }
+  // A half-built output must not look like a result.
+  for (int port = 0; outputVector && port < outputVector->GetNumberOfInformationObjects(); ++port)
+  {
+    if (vtkDataObject* output =
+          outputVector->GetInformationObject(port)->Get(vtkDataObject::DATA_OBJECT()))
+    {
+      output->Initialize();
+    }
+  }
+  vtkErrorWithObjectMacro(
+    filter, << (subject.empty() ? std::string("Failed") : subject) << ": " << reason << ".");
+  return 0;
 }
 
 void SetPoints(vtkPolyData* output, const Points& points)

@@ -16,7 +16,9 @@
 
 #include <string>
 
+class vtkAlgorithm;
 class vtkFieldData;
+class vtkInformationVector;
 class vtkPolyData;
 
 namespace mobius
@@ -26,6 +28,9 @@ namespace vtk
 /// Array names of the data contract; part of the public API, keep them stable.
 constexpr const char* SurfacePointsArrayName = "SurfacePoints";
 constexpr const char* SurfaceAreaArrayName = "SurfaceArea";
+/// Point array of vtkSphericalConformalMap's output: the index of the point in the filter's
+/// input (-1 for a point a repair created), i.e. the vertex number in the mesh file.
+constexpr const char* InputPointIdArrayName = "InputPointId";
 
 /// Distance from 1 that a spherical map's point radius may have.
 constexpr double UnitSphereTolerance = 1e-6;
@@ -33,8 +38,13 @@ constexpr double UnitSphereTolerance = 1e-6;
 /// Copies the points; fails on an empty point set or NaN/Inf coordinates.
 std::string ExtractPoints(vtkPolyData* input, Points& points);
 
-/// Copies the polygons, all of which must be triangles; fails on lines, strips and polygons
-/// of other sizes.
+/// Fails if a cell (vertex, line, polygon or strip) refers to a point id outside
+/// [0, number of points): VTK's readers do not check, and every later step would read or
+/// write out of bounds.
+std::string CheckCellPointIds(vtkPolyData* input);
+
+/// Copies the polygons, all of which must be triangles of point ids in range; fails on
+/// lines, strips, polygons of other sizes and ids outside [0, number of points).
 std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles);
 
 /// Fails unless every point is within UnitSphereTolerance of the unit sphere.
@@ -51,6 +61,12 @@ std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& 
 
 /// Reads point data `SurfacePoints` (3 components, one tuple per point, finite).
 std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints);
+
+/// For a filter's RequestData, inside `catch (...)`: reports the exception being handled
+/// (std::bad_alloc as running out of memory) as the filter's error, prefixed by `subject`
+/// when given (a file name), empties the output and returns 0 (RequestData's failure).
+int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
+  const std::string& subject = {});
 
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);

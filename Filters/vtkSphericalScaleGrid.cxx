@@ -134,6 +134,22 @@ vtkSphericalScaleGrid::vtkSphericalScaleGrid() = default;
 
 //------------------------------------------------------------------------------
 int vtkSphericalScaleGrid::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // No exception may leave the pipeline (in ParaView it would end the application): running
+  // out of memory, or a failure in a worker thread, becomes this filter's error.
+  try
+  {
+    return this->ComputeOutput(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    return mobius::vtk::ReportException(this, outputVector);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkSphericalScaleGrid::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);

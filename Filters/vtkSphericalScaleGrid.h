@@ -22,8 +22,9 @@
  * DisplaceByValue each point is moved radially to |smoothed value| / max |smoothed value|
  * (the corner value being the mean of the adjacent cells), the picture of Figure 6.
  *
- * Errors: input not a spherical map, missing or invalid `SurfaceArea`, Resolution odd or
- * below 4.
+ * Errors: input not a spherical map (or with a triangle referring to a point id out of
+ * range), missing or invalid `SurfaceArea`, Resolution odd or below 4, running out of
+ * memory.
  *
  * @sa vtkMobiusCenter vtkSO3Register
  */
@@ -95,6 +96,8 @@ protected:
   ~vtkSphericalScaleGrid() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int Resolution = 256;
   double SmoothingTime = 5e-4;

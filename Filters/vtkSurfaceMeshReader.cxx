@@ -1,5 +1,8 @@
 #include "vtkSurfaceMeshReader.h"
 
+#include "vtkMeshFileChecks.h"
+#include "vtkSphericalMapData.h"
+
 #include "vtkCellArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -7,7 +10,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
-#include "vtkOBJReader.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
 #include "vtkPoints.h"
@@ -19,6 +21,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -140,6 +145,141 @@ std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
   return {};
 }
 
+// Parses the positions and faces of an OBJ file. VTK's OBJ reader is not used: with
+// texture coordinates or normals it renumbers the points in order of first use in the faces
+// (so vertex numbers no longer match the file), it turns a NaN coordinate into the previous
+// vertex's, and index 0 or an index past the end corrupts its memory. Here point i is the
+// file's i-th `v`; faces may use `v`, `v/vt`, `v//vn`, `v/vt/vn` and negative (relative)
+// indices, and have any number (>= 3) of vertices; other statements (vt, vn, g, o, s, usemtl,
+// l, p, ...) are skipped. Returns an empty string or the reason it failed.
+std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
+{
+  std::ifstream in(fileName);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> ids;
+  // Faces may name vertices defined further down: those are checked at the end.
+  struct ForwardReference
+  {
+    vtkIdType Index;
+    long long Face, Line;
+  };
+  std::vector<ForwardReference> forwardReferences;
+  std::string line, statement;
+  long long lineNumber = 0, faces = 0;
+  while (std::getline(in, line))
+  {
+    ++lineNumber;
+    // A backslash at the end continues the statement on the next line.
+    while (!line.empty() && (line.back() == '\\' || line.back() == '\r'))
+    {
+      const bool continued = line.back() == '\\';
+      line.pop_back();
+      std::string next;
+      if (continued && std::getline(in, next))
+      {
+        ++lineNumber;
+        line += ' ' + next;
+      }
+    }
+    const auto hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.erase(hash);
+    }
+    std::istringstream fields(line);
+    if (!(fields >> statement))
+    {
+      continue;
+    }
+    if (statement == "v")
+    {
+      const vtkIdType vertex = points->GetNumberOfPoints();
+      double p[3];
+      std::string text[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        char* end = nullptr;
+        if (!(fields >> text[k]) || (p[k] = std::strtod(text[k].c_str(), &end), *end != '\0'))
+        {
+          std::ostringstream error;
+          error << "vertex " << vertex << " (line " << lineNumber
+                << ") does not have three numeric coordinates";
+          return error.str();
+        }
+        if (!std::isfinite(p[k]))
+        {
+          std::ostringstream error;
+          error << "vertex " << vertex << " (line " << lineNumber
+                << ") has a NaN or infinite coordinate '" << text[k] << "'";
+          return error.str();
+        }
+      }
+      points->InsertNextPoint(p);
+    }
+    else if (statement == "f")
+    {
+      ids.clear();
+      std::string corner;
+      while (fields >> corner)
+      {
+        // The vertex index is the part before the first '/'.
+        errno = 0;
+        char* end = nullptr;
+        const long long index = std::strtoll(corner.c_str(), &end, 10);
+        const bool isNumber = end != corner.c_str() && (*end == '\0' || *end == '/');
+        const long long defined = points->GetNumberOfPoints();
+        // Relative indices count back from the last vertex defined so far.
+        const long long absolute = index > 0 ? index - 1 : defined + index;
+        if (!isNumber || errno == ERANGE || index == 0 || absolute < 0)
+        {
+          std::ostringstream error;
+          error << "face " << faces << " (line " << lineNumber << ") has an invalid vertex index '"
+                << corner << "'"
+                << (isNumber && index == 0 ? " (OBJ numbers vertices from 1)"
+                    : isNumber && index < 0
+                    ? " (a negative index counts back from the last vertex defined before it)"
+                    : "");
+          return error.str();
+        }
+        ids.push_back(static_cast<vtkIdType>(absolute));
+      }
+      if (ids.size() < 3)
+      {
+        std::ostringstream error;
+        error << "face " << faces << " (line " << lineNumber << ") has fewer than 3 vertices";
+        return error.str();
+      }
+      const vtkIdType largest = *std::max_element(ids.begin(), ids.end());
+      if (largest >= points->GetNumberOfPoints())
+      {
+        forwardReferences.push_back({ largest, faces, lineNumber });
+      }
+      polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+      ++faces;
+    }
+  }
+  if (in.bad())
+  {
+    return "reading the file failed";
+  }
+  for (const auto& reference : forwardReferences)
+  {
+    if (reference.Index >= points->GetNumberOfPoints())
+    {
+      std::ostringstream error;
+      error << "face " << reference.Face << " (line " << reference.Line << ") refers to vertex "
+            << reference.Index + 1 << " (OBJ numbering), but the file has "
+            << points->GetNumberOfPoints() << " vertices";
+      return error.str();
+    }
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  return {};
+}
+
 // Runs a VTK reader, turning its error events into our message.
 std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
 {
@@ -189,6 +329,22 @@ bool vtkSurfaceMeshReader::IsSupportedFile(const char* fileName)
 
 //------------------------------------------------------------------------------
 int vtkSurfaceMeshReader::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // No exception may leave the pipeline (in ParaView it would end the application): running
+  // out of memory, or a failure in a worker thread, becomes this filter's error.
+  try
+  {
+    return this->ComputeOutput(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    return mobius::vtk::ReportException(this, outputVector, this->FileName ? this->FileName : "");
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkSurfaceMeshReader::ComputeOutput(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
@@ -210,17 +366,18 @@ int vtkSurfaceMeshReader::RequestData(
   {
     error = ReadOFF(fileName, mesh);
   }
+  else if (extension == "obj")
+  {
+    error = ReadOBJ(fileName, mesh);
+  }
   else
   {
     vtkSmartPointer<vtkAlgorithm> reader;
-    if (extension == "obj")
+    if (extension == "ply")
     {
-      auto obj = vtkSmartPointer<vtkOBJReader>::New();
-      obj->SetFileName(fileName.c_str());
-      reader = obj;
-    }
-    else if (extension == "ply")
-    {
+      // VTK's PLY reader looks up the points of each face as it reads: a bad index must be
+      // found before it runs.
+      error = mobius::vtk::CheckPLYFile(fileName);
       auto ply = vtkSmartPointer<vtkPLYReader>::New();
       ply->SetFileName(fileName.c_str());
       reader = ply;
@@ -249,7 +406,14 @@ int vtkSurfaceMeshReader::RequestData(
                     << "' (supported: .obj, .off, .ply, .stl, .vtp, .vtk).");
       return 0;
     }
-    error = ReadWithVTK(reader, mesh);
+    if (error.empty())
+    {
+      error = ReadWithVTK(reader, mesh);
+    }
+    if (error.empty())
+    {
+      error = mobius::vtk::CheckCellPointIds(mesh);
+    }
   }
   if (error.empty() && mesh->GetNumberOfPoints() == 0)
   {

@@ -2,12 +2,19 @@
  * @class   vtkSurfaceMeshReader
  * @brief   Reads a surface mesh from OBJ, OFF, PLY, STL, VTP or legacy VTK, by extension.
  *
- * One reader for the formats geometry-processing users keep their meshes in. OBJ, PLY,
- * STL, VTP and legacy .vtk go through VTK's own readers; OFF (with optional COFF/NOFF
+ * One reader for the formats geometry-processing users keep their meshes in. PLY, STL,
+ * VTP and legacy .vtk go through VTK's own readers, whose cells are then checked to refer
+ * only to existing points (VTK's readers do not check). OFF (with optional COFF/NOFF
  * header variants, comments and per-element colors, which are skipped) is parsed here
- * since VTK has no OFF reader. Polygons are kept as they are (vtkSphericalConformalMap
- * triangulates them). An unreadable, empty or malformed file is an error that names the
- * file and the reason, and the output is left empty.
+ * since VTK has no OFF reader, and so is OBJ (positions and faces; texture coordinates,
+ * normals, groups and materials are skipped), since VTK's OBJ reader renumbers the points
+ * of files with texture coordinates or normals and does not check indices or coordinates.
+ *
+ * Output point i is the file's vertex i (for OBJ, the i-th `v` line), also for vertices
+ * no face uses. Polygons are kept as they are (vtkSphericalConformalMap triangulates them).
+ * An unreadable, empty or malformed file (including a face index out of range and, for
+ * OBJ, a NaN or infinite coordinate) is an error that names the file and the reason, and
+ * the output is left empty.
  */
 #ifndef vtkSurfaceMeshReader_h
 #define vtkSurfaceMeshReader_h
@@ -43,6 +50,8 @@ protected:
   ~vtkSurfaceMeshReader() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The work of RequestData, which turns an exception thrown here into an error.
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   char* FileName = nullptr;
 

@@ -68,10 +68,14 @@ print("registration error %.4f, %d candidates; %d source vertices carry the targ
     field.GetArray("RegistrationError").GetValue(0), field.GetArray("CandidateScores").GetNumberOfTuples(),
     result.GetPointData().GetArray("Height").GetNumberOfTuples()))
 if not args.target:
-    # Vertex i of the deformed copy is the counterpart of vertex i of the source.
+    # Vertex i of the deformed copy is the counterpart of vertex i of the source. The map's
+    # point k is not source vertex k when a repair renumbered the points: InputPointId says
+    # which it is (-1: a point a repair created).
     truth = servermanager.Fetch(target)
     mapped = result.GetPointData().GetArray("MappedPoints")
-    errors = [math.dist(mapped.GetTuple3(i), truth.GetPoint(i)) for i in range(truth.GetNumberOfPoints())]
+    source_ids = result.GetPointData().GetArray("InputPointId")
+    errors = [math.dist(mapped.GetTuple3(k), truth.GetPoint(int(source_ids.GetTuple1(k))))
+              for k in range(result.GetNumberOfPoints()) if source_ids.GetTuple1(k) >= 0]
     bounds = truth.GetBounds()
     diagonal = math.dist(bounds[0::2], bounds[1::2])
     print("mean distance to the true counterpart: %.2f%% of the target's bounding-box diagonal"

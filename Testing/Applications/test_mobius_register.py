@@ -1,5 +1,7 @@
-"""mobius-register as a user runs it: the demo, two meshes, --json, and every kind of
-failure with its message, exit code and no partial or overwritten output."""
+"""mobius-register as a user runs it: the demo, two meshes, --json, every kind of failure
+(hostile files included) with its message, exit code and no partial or overwritten output,
+and vertex numbers in the CSV that follow the input files."""
+import itertools
 import json
 import os
 import shutil
@@ -94,6 +96,106 @@ check(os.path.getsize(os.path.join(work, "mine.vtp.off")) == os.path.getsize(han
 no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
 expect_failure([hand, hand, "-o", "out6", "--png", "out6.png", "--resolution", "32"],
                ["out6.png", "X display"], ["out6"], env=no_display)
+
+# Hostile files: each is one line naming the file and the problem, exit status 1, no output
+# (and no crash: VTK's readers would write out of bounds on several of them).
+tetra_v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+ply_header = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+              "0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+hostile = {
+    "zero.obj": (tetra_v + "f 0 1 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n", ["invalid vertex index '0'"]),
+    "far.obj": (tetra_v + "f 1 3 2\nf 1 2 99999\nf 2 3 4\nf 1 4 3\n", ["refers to vertex 99999"]),
+    "nan.obj": ("v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n",
+                ["vertex 2 (line 3) has a NaN or infinite coordinate"]),
+    "far.ply": (ply_header + "3 0 2 1\n3 0 1 1000000\n3 1 2 3\n3 0 3 2\n", ["face 1 refers to vertex 1000000"]),
+    "negative.ply": (ply_header + "3 0 2 1\n3 0 1 -5\n3 1 2 3\n3 0 3 2\n", ["face 1 refers to vertex -5"]),
+    "past.vtk": ("# vtk DataFile Version 3.0\nhostile\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+                 "0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 16\n3 0 2 1\n3 0 1 3\n3 1 2 7\n3 0 3 2\n",
+                 ["polygon 2 refers to point 7"]),
+}
+for number, (name, (text, words)) in enumerate(sorted(hostile.items())):
+    with open(os.path.join(work, name), "w") as f:
+        f.write(text)
+    for arguments in ([name, hand], [hand, name]):
+        expect_failure([*arguments, "-o", f"hostile{number}"], [name, *words], [f"hostile{number}"])
+
+
+# Vertex numbering: the CSV names the vertices by their number in the files, whatever the
+# reader and the repairs did to the order.
+def read_off(path):
+    with open(path) as f:
+        lines = [line for line in (raw.split("#")[0].strip() for raw in f) if line]
+    n, m = map(int, lines[1].split()[:2])
+    points = [line for line in lines[2:2 + n]]
+    faces = [list(map(int, line.split()[1:4])) for line in lines[2 + n:2 + n + m]]
+    return points, faces
+
+
+def write_off(path, points, faces):
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(points)} {len(faces)} 0\n")
+        f.writelines(p + "\n" for p in points)
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in faces)
+
+
+registrations = itertools.count()
+
+
+def correspondence(*arguments):
+    """Runs a registration; returns (source_vertex, target vertex of the largest weight) pairs."""
+    output = f"numbering{next(registrations)}"
+    code, _, err = run(*arguments, "-o", output, "--resolution", "64", "--quiet")
+    check(code == 0, f"{arguments}: exit code {code}: {err}")
+    if code != 0:
+        return []
+    pairs = []
+    with open(os.path.join(work, output + ".csv")) as f:
+        f.readline()
+        for row in f:
+            fields = row.split(",")
+            weights = [float(w) for w in fields[5:8]]
+            pairs.append((int(fields[0]), int(fields[2 + weights.index(max(weights))])))
+    return pairs
+
+
+def expect_numbering(pairs, expected_source, counterpart, label, fraction=0.98):
+    sources = [s for s, _ in pairs]
+    check(sorted(sources) == sorted(expected_source), f"{label}: source_vertex is not the file's numbering")
+    matched = sum(1 for s, t in pairs if s >= 0 and t == counterpart(s))
+    check(matched >= fraction * len(pairs),
+          f"{label}: {matched} of {len(pairs)} vertices map to their counterpart")
+
+
+points, faces = read_off(hand)
+n = len(points)
+# OBJ with texture coordinates and normals, faces listed backwards with rotated corners, so
+# VTK's OBJ reader would number the vertices in an order unrelated to the `v` lines.
+with open(os.path.join(work, "hand-vt.obj"), "w") as f:
+    f.writelines(f"v {p}\n" for p in points)
+    f.writelines(f"vt {i / n} 0.5\nvn 0 0 1\n" for i in range(n))
+    f.writelines(f"f {b + 1}/{b + 1}/{b + 1} {c + 1}/{c + 1}/{c + 1} {a + 1}/{a + 1}/{a + 1}\n"
+                 for a, b, c in reversed(faces))
+expect_numbering(correspondence("hand-vt.obj", hand), range(n), lambda s: s, "OBJ with vt/vn as source")
+expect_numbering(correspondence(hand, "hand-vt.obj"), range(n), lambda s: s, "OBJ with vt/vn as target")
+# An unused vertex in front: file vertex s + 1 is hand vertex s.
+write_off(os.path.join(work, "hand-unused.off"), ["5 5 5"] + points,
+          [[a + 1, b + 1, c + 1] for a, b, c in faces])
+expect_numbering(correspondence("hand-unused.off", hand), range(1, n + 1), lambda s: s - 1, "unused vertex")
+# A separate tetrahedron in front, dropped by --keep-largest-component.
+tetra = ["3 3 3", "3.1 3 3", "3 3.1 3", "3 3 3.1"]
+write_off(os.path.join(work, "hand-tetra.off"), tetra + points,
+          [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]] + [[a + 4, b + 4, c + 4] for a, b, c in faces])
+expect_numbering(correspondence("hand-tetra.off", hand, "--keep-largest-component"), range(4, n + 4),
+                 lambda s: s - 4, "--keep-largest-component")
+# Two neighbouring faces removed: --fill-holes closes the four-edge hole around a new vertex,
+# which is -1 in the CSV; the others keep their numbers.
+first = set(faces[0])
+neighbour = next(k for k in range(1, len(faces)) if len(first & set(faces[k])) == 2)
+holed = [face for k, face in enumerate(faces) if k not in (0, neighbour)]
+write_off(os.path.join(work, "hand-hole.off"), points, holed)
+expect_numbering(correspondence("hand-hole.off", hand, "--fill-holes"), [-1, *range(n)], lambda s: s,
+                 "--fill-holes", fraction=0.95)
 
 print(f"{len(failures)} failed")
 sys.exit(1 if failures else 0)

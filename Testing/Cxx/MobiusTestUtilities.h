@@ -1,5 +1,5 @@
-// Shared helpers of the C++ filter tests: generated spherical maps and an observer that
-// records vtkErrorMacro messages so tests can check what a filter says.
+// Shared helpers of the C++ filter tests: generated surface meshes and spherical maps, and
+// an observer that records vtkErrorMacro messages so tests can check what a filter says.
 #ifndef MobiusTestUtilities_h
 #define MobiusTestUtilities_h
 
@@ -102,6 +102,31 @@ inline Eigen::Vector3d BumpySurface(const Eigen::Vector3d& x)
   const double bulge =
     1.0 + 0.8 * std::exp(-4.0 * (x - Eigen::Vector3d(0.6, 0.6, 0.5)).squaredNorm());
   return Eigen::Vector3d(1.7 * x.x(), x.y(), 0.6 * x.z()) * bulge;
+}
+
+/// BumpySurface as a surface mesh (not a spherical map): an icosphere pushed through it.
+inline vtkSmartPointer<vtkPolyData> BumpyMesh(int levels)
+{
+  mobius::Points sphere;
+  mobius::Triangles triangles;
+  mobius::MakeIcosphere(levels, sphere, triangles);
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (Eigen::Index i = 0; i < sphere.rows(); ++i)
+  {
+    const Eigen::Vector3d p = BumpySurface(sphere.row(i).transpose());
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> polys;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const vtkIdType ids[3] = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+    polys->InsertNextCell(3, ids);
+  }
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
 }
 
 /// First component of field-data array `name`, NaN if absent.

@@ -12,7 +12,9 @@
 #include "vtkTestUtilities.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include <algorithm>
 #include <fstream>
+#include <vector>
 
 namespace
 {
@@ -55,6 +57,142 @@ int ExpectError(const std::string& fileName, const std::string& words)
 void WriteText(const std::string& fileName, const std::string& text)
 {
   std::ofstream(fileName) << text;
+}
+
+const char* const TetraVertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+
+std::string AsciiPly(
+  const std::string& faces, const std::string& vertices = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+{
+  return "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+         "end_header\n" +
+    vertices + faces;
+}
+
+// Files whose indices or coordinates VTK's readers would pass on unchecked (or crash on):
+// each must be an error naming the problem, without touching memory out of bounds.
+int TestHostileFiles(const std::string& dir)
+{
+  int failures = 0;
+  WriteText(dir + "/zero.obj", std::string(TetraVertices) + "f 0 1 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  failures +=
+    ExpectError(dir + "/zero.obj", "invalid vertex index '0' (OBJ numbers vertices from 1)");
+  WriteText(
+    dir + "/far.obj", std::string(TetraVertices) + "f 1 3 2\nf 1 2 99999\nf 2 3 4\nf 1 4 3\n");
+  failures += ExpectError(dir + "/far.obj", "face 1 (line 6) refers to vertex 99999");
+  WriteText(dir + "/before.obj", std::string(TetraVertices) + "f 1 3 2\nf -1 -2 -5\n");
+  failures += ExpectError(dir + "/before.obj", "invalid vertex index '-5'");
+  WriteText(dir + "/words.obj", std::string(TetraVertices) + "f 1 3 two\n");
+  failures += ExpectError(dir + "/words.obj", "invalid vertex index 'two'");
+  WriteText(dir + "/line.obj", std::string(TetraVertices) + "f 1 3\n");
+  failures += ExpectError(dir + "/line.obj", "fewer than 3 vertices");
+  WriteText(dir + "/nan.obj", "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n");
+  failures +=
+    ExpectError(dir + "/nan.obj", "vertex 2 (line 3) has a NaN or infinite coordinate 'nan'");
+  WriteText(dir + "/inf.obj", "v 0 0 0\nv 1 0 -inf\nf 1 2 1\n");
+  failures += ExpectError(dir + "/inf.obj", "vertex 1 (line 2) has a NaN or infinite coordinate");
+  WriteText(dir + "/short.obj", "v 0 0\nf 1 1 1\n");
+  failures += ExpectError(dir + "/short.obj", "vertex 0 (line 1) does not have three numeric");
+
+  WriteText(dir + "/far.ply", AsciiPly("3 0 2 1\n3 0 1 1000000\n3 1 2 3\n3 0 3 2\n"));
+  failures += ExpectError(dir + "/far.ply", "face 1 refers to vertex 1000000, but the file has 4");
+  WriteText(dir + "/negative.ply", AsciiPly("3 0 2 1\n3 0 1 -5\n3 1 2 3\n3 0 3 2\n"));
+  failures += ExpectError(dir + "/negative.ply", "face 1 refers to vertex -5");
+  WriteText(dir + "/exponent.ply", AsciiPly("3 0 2 1\n3 0 1 1e6\n3 1 2 3\n3 0 3 2\n"));
+  failures += ExpectError(dir + "/exponent.ply", "face 1 (property 'vertex_indices') is malformed");
+  WriteText(dir + "/truncated.ply", AsciiPly("3 0 2 1\n3 0 1\n"));
+  failures += ExpectError(dir + "/truncated.ply", "is missing");
+  WriteText(dir + "/nan.ply",
+    AsciiPly("3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n", "0 0 0\n1 0 0\n0 nan 0\n0 0 1\n"));
+  failures += ExpectError(dir + "/nan.ply", "vertex 2 has a NaN or infinite coordinate y");
+
+  // Binary, both byte orders: a tetrahedron whose last face has index `last`.
+  for (const bool big : { false, true })
+  {
+    for (const int last : { 3, 4, -1 })
+    {
+      std::string bytes = std::string("ply\nformat ") +
+        (big ? "binary_big_endian" : "binary_little_endian") +
+        " 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+        "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+      auto put = [&](const void* value, size_t size) {
+        std::string word(static_cast<const char*>(value), size);
+        if (big) // this test runs on little-endian machines only (x86-64, arm64)
+        {
+          std::reverse(word.begin(), word.end());
+        }
+        bytes += word;
+      };
+      const float coordinates[12] = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+      for (float c : coordinates)
+      {
+        put(&c, sizeof c);
+      }
+      const int faces[4][3] = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, last } };
+      for (const auto& face : faces)
+      {
+        bytes += '\3';
+        for (int index : face)
+        {
+          put(&index, sizeof index);
+        }
+      }
+      const std::string name =
+        dir + "/binary" + (big ? "-big" : "-little") + std::to_string(last) + ".ply";
+      WriteText(name, bytes);
+      failures += last == 3
+        ? ExpectMesh(name, 4, 4)
+        : ExpectError(
+            name, "face 3 refers to vertex " + std::to_string(last) + ", but the file has 4");
+    }
+  }
+
+  WriteText(dir + "/past.vtk", "# vtk DataFile Version 3.0\nhostile\nASCII\nDATASET POLYDATA\n"
+                               "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 16\n"
+                               "3 0 2 1\n3 0 1 3\n3 1 2 7\n3 0 3 2\n");
+  failures += ExpectError(dir + "/past.vtk", "polygon 2 refers to point 7, but there are 4 points");
+  return failures;
+}
+
+// OBJ with texture coordinates and normals, faces in an order unrelated to the `v` order,
+// polygons, relative indices and an unused vertex: point i must still be the file's i-th `v`.
+int TestObjVertexOrder(const std::string& dir)
+{
+  int failures = 0;
+  WriteText(dir + "/order.obj",
+    "# a square pyramid whose faces list the apex (the last v) first\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 9 9 9\nv 0.5 0.5 1\n"
+    "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n"
+    "g side\nusemtl stone\ns 1\n"
+    "f 6/1/1 1/2/1 2/3/1\nf -1/1 2/2 3/3\nf 6//1 3//1 4//1\nf 6 4 \\\n 1\n"
+    "f 4/1/1 3/2/1 2/3/1 1/1/1\n");
+  vtkNew<vtkSurfaceMeshReader> reader;
+  reader->SetFileName((dir + "/order.obj").c_str());
+  reader->Update();
+  vtkPolyData* mesh = reader->GetOutput();
+  MOBIUS_EXPECT(mesh->GetNumberOfPoints() == 6);
+  MOBIUS_EXPECT(mesh->GetNumberOfPolys() == 5);
+  const double expected[6][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 9, 9, 9 },
+    { 0.5, 0.5, 1 } };
+  for (vtkIdType i = 0; i < std::min<vtkIdType>(6, mesh->GetNumberOfPoints()); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    MOBIUS_EXPECT(p[0] == expected[i][0] && p[1] == expected[i][1] && p[2] == expected[i][2]);
+  }
+  const std::vector<std::vector<vtkIdType>> faces = { { 5, 0, 1 }, { 5, 1, 2 }, { 5, 2, 3 },
+    { 5, 3, 0 }, { 3, 2, 1, 0 } };
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkCellArray* polys = mesh->GetPolys();
+  polys->InitTraversal();
+  for (const auto& face : faces)
+  {
+    MOBIUS_EXPECT(polys->GetNextCell(npts, ids) &&
+      std::vector<vtkIdType>(ids, ids + npts) == face);
+  }
+  return failures;
 }
 }
 
@@ -127,5 +265,7 @@ int TestSurfaceMeshReader(int argc, char* argv[])
     failures += ExpectError(dir + "/garbage.vtp", "");
     vtkLogger::SetStderrVerbosity(static_cast<vtkLogger::Verbosity>(verbosity));
   }
+  failures += TestHostileFiles(dir);
+  failures += TestObjVertexOrder(dir);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -34,6 +34,8 @@
 // fast path that needs no piece computation at all and is exact.
 #include "SphericalAreaGrid.h"
 
+#include "ParallelFor.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -670,10 +672,12 @@ bool RasterizeSphericalAreas(const Points& spherePoints, const Triangles& triang
     accumulators.emplace_back(n);
   }
   std::atomic<bool> aborted(false);
-  auto work = [&](int thread) {
-    TriangleRasterizer rasterizer(grid, accumulators[thread]);
-    const Eigen::Index begin = triangleCount * thread / threads;
-    const Eigen::Index end = triangleCount * (thread + 1) / threads;
+  // One part of the triangles per thread, each into its own accumulator; ParallelFor carries
+  // an exception (std::bad_alloc) to this thread.
+  ParallelFor(threads, threads, [&](int part, int thread) {
+    TriangleRasterizer rasterizer(grid, accumulators[part]);
+    const Eigen::Index begin = triangleCount * part / threads;
+    const Eigen::Index end = triangleCount * (part + 1) / threads;
     for (Eigen::Index t = begin; t < end; ++t)
     {
       if ((t - begin) % 4096 == 0)
@@ -692,17 +696,7 @@ bool RasterizeSphericalAreas(const Points& spherePoints, const Triangles& triang
       rasterizer.Add(vertices[triangles(t, 0)], vertices[triangles(t, 1)],
         vertices[triangles(t, 2)], triangleAreas[t]);
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-  {
-    pool.emplace_back(work, t);
-  }
-  work(0);
-  for (auto& thread : pool)
-  {
-    thread.join();
-  }
+  });
   if (aborted)
   {
     error = "aborted";

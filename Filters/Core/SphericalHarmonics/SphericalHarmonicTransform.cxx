@@ -16,11 +16,11 @@
 
 #include "FFTWPlannerMutex.h"
 #include "NormalizedLegendre.h"
+#include "ParallelFor.h"
 
 #include <fftw3.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -29,39 +29,6 @@ namespace mobius
 {
 namespace
 {
-/// Runs task(k) for k = 0..count-1 on up to `threads` threads, handing out indices in order
-/// (callers order the work so that the expensive indices come first).
-template <class Task>
-void ParallelFor(int count, int threads, const Task& task)
-{
-  threads = std::max(1, std::min(threads, count));
-  if (threads == 1)
-  {
-    for (int k = 0; k < count; ++k)
-    {
-      task(k);
-    }
-    return;
-  }
-  std::atomic<int> next(0);
-  auto worker = [&]() {
-    for (int k = next++; k < count; k = next++)
-    {
-      task(k);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-  {
-    pool.emplace_back(worker);
-  }
-  worker();
-  for (auto& thread : pool)
-  {
-    thread.join();
-  }
-}
-
 /// Fejer's first-rule weights for theta_j = pi (2j+1)/(2n): with
 /// w_j = sum_k a_k cos(k theta_j) and the discrete orthogonality of cos(k theta_j), requiring
 /// sum_j w_j cos(k theta_j) = int_0^pi cos(k theta) sin(theta) dtheta = 2/(1-k^2) (k even), 0 (k odd)
@@ -148,7 +115,7 @@ void SphericalHarmonicTransform::Forward(
   std::vector<std::complex<double>> spectra(static_cast<size_t>(n) * width);
 
   const int rowsPerTask = 16;
-  ParallelFor((n + rowsPerTask - 1) / rowsPerTask, this->NumberOfThreads, [&](int task) {
+  ParallelFor((n + rowsPerTask - 1) / rowsPerTask, this->NumberOfThreads, [&](int task, int) {
     for (int j = task * rowsPerTask; j < std::min(n, (task + 1) * rowsPerTask); ++j)
     {
       fftw_execute_dft_r2c(this->Plans->RealToComplex, const_cast<double*>(grid + size_t(j) * n),
@@ -157,7 +124,7 @@ void SphericalHarmonicTransform::Forward(
   });
 
   coefficients.Resize(b);
-  ParallelFor(b, this->NumberOfThreads, [&](int m) {
+  ParallelFor(b, this->NumberOfThreads, [&](int m, int) {
     // Even and odd (in cos theta) parts of the weighted row transforms, phase-shifted to
     // the cell centers and scaled by the azimuthal quadrature weight 2 pi/N.
     const std::complex<double> shift = std::polar(2.0 * M_PI / n, -M_PI * m / n);
@@ -204,7 +171,7 @@ void SphericalHarmonicTransform::Inverse(
   const int bands = std::min(b, coefficients.Bandwidth);
   std::vector<std::complex<double>> spectra(static_cast<size_t>(n) * width, { 0.0, 0.0 });
 
-  ParallelFor(bands, this->NumberOfThreads, [&](int m) {
+  ParallelFor(bands, this->NumberOfThreads, [&](int m, int) {
     // Re sum_m g(m) e^{i m phi} = Re g(0) + sum_{m>0} Re(h(m) e^{i m phi}) with
     // h(m) = g(m) + conj(g(-m)) = sum_l (f_lm + (-1)^m conj(f_l,-m)) Pbar_l^m, which is exact
     // for any input and equals 2 g(m) for a real function's coefficients.
@@ -244,7 +211,7 @@ void SphericalHarmonicTransform::Inverse(
   });
 
   const int rowsPerTask = 16;
-  ParallelFor((n + rowsPerTask - 1) / rowsPerTask, this->NumberOfThreads, [&](int task) {
+  ParallelFor((n + rowsPerTask - 1) / rowsPerTask, this->NumberOfThreads, [&](int task, int) {
     for (int j = task * rowsPerTask; j < std::min(n, (task + 1) * rowsPerTask); ++j)
     {
       fftw_execute_dft_c2r(this->Plans->ComplexToReal,

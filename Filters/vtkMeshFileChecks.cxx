@@ -1,0 +1,364 @@
+#include "vtkMeshFileChecks.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace mobius
+{
+namespace vtk
+{
+namespace
+{
+struct ScalarType
+{
+  int Size = 0; // bytes in the binary encodings; 0: unknown type name
+  bool IsInteger = false;
+  bool IsSigned = false;
+};
+
+ScalarType ParseScalarType(const std::string& name)
+{
+  if (name == "char" || name == "int8")
+    return { 1, true, true };
+  if (name == "uchar" || name == "uint8")
+    return { 1, true, false };
+  if (name == "short" || name == "int16")
+    return { 2, true, true };
+  if (name == "ushort" || name == "uint16")
+    return { 2, true, false };
+  if (name == "int" || name == "int32")
+    return { 4, true, true };
+  if (name == "uint" || name == "uint32")
+    return { 4, true, false };
+  if (name == "float" || name == "float32")
+    return { 4, false, true };
+  if (name == "double" || name == "float64")
+    return { 8, false, true };
+  return {};
+}
+
+struct Property
+{
+  std::string Name;
+  bool IsList = false;
+  ScalarType CountType, ValueType;
+};
+
+struct Element
+{
+  std::string Name;
+  long long Count = 0;
+  std::vector<Property> Properties;
+};
+
+enum class Encoding
+{
+  Ascii,
+  LittleEndian,
+  BigEndian
+};
+
+// Reads one value of a given type, in any of the three encodings, as a double (floating
+// types) or a long long (integer types).
+class ValueReader
+{
+public:
+  ValueReader(std::istream& in, Encoding encoding)
+    : In(in)
+    , Format(encoding)
+  {
+  }
+
+  // In ASCII every element item is a line of its own (as VTK reads it); call this before
+  // each item. False at the end of the file.
+  bool BeginItem()
+  {
+    if (this->Format != Encoding::Ascii)
+    {
+      return true;
+    }
+    std::string line;
+    while (std::getline(this->In, line))
+    {
+      if (line.find_first_not_of(" \t\r") != std::string::npos)
+      {
+        this->Line.clear();
+        this->Line.str(line);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // False at the end of the file (or, in ASCII, of the item's line), or for an ASCII token
+  // that is not a number of the type (Malformed).
+  bool Read(const ScalarType& type, double& real, long long& integer)
+  {
+    if (this->Format == Encoding::Ascii)
+    {
+      std::string token;
+      if (!(this->Line >> token))
+      {
+        return false;
+      }
+      char* end = nullptr;
+      errno = 0;
+      if (type.IsInteger)
+      {
+        integer = std::strtoll(token.c_str(), &end, 10);
+        real = static_cast<double>(integer);
+      }
+      else
+      {
+        real = std::strtod(token.c_str(), &end);
+        integer = 0;
+      }
+      this->Malformed = end == token.c_str() || *end != '\0' || errno == ERANGE;
+      return !this->Malformed;
+    }
+    unsigned char bytes[8];
+    if (!this->In.read(reinterpret_cast<char*>(bytes), type.Size))
+    {
+      return false;
+    }
+    const bool little = this->Format == Encoding::LittleEndian;
+    std::uint64_t bits = 0;
+    for (int k = 0; k < type.Size; ++k)
+    {
+      bits |= static_cast<std::uint64_t>(bytes[little ? k : type.Size - 1 - k]) << (8 * k);
+    }
+    if (type.IsInteger)
+    {
+      const int unused = 64 - 8 * type.Size;
+      integer = type.IsSigned
+        ? static_cast<long long>(static_cast<std::int64_t>(bits << unused) >> unused)
+        : static_cast<long long>(bits);
+      real = static_cast<double>(integer);
+    }
+    else if (type.Size == 4)
+    {
+      const auto narrow = static_cast<std::uint32_t>(bits);
+      float value;
+      std::memcpy(&value, &narrow, sizeof value);
+      real = value;
+    }
+    else
+    {
+      std::memcpy(&real, &bits, sizeof real);
+    }
+    return true;
+  }
+
+  bool Malformed = false;
+
+private:
+  std::istream& In;
+  Encoding Format;
+  std::istringstream Line;
+};
+
+std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element>& elements)
+{
+  std::string line;
+  if (!std::getline(in, line) || line.compare(0, 3, "ply") != 0 ||
+    line.find_first_not_of(" \t\r", 3) != std::string::npos)
+  {
+    return "not a PLY file (the first line is not 'ply')";
+  }
+  bool haveFormat = false;
+  for (int number = 2; std::getline(in, line); ++number)
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    std::istringstream fields(line);
+    std::string keyword;
+    fields >> keyword;
+    if (keyword == "end_header")
+    {
+      if (!haveFormat)
+      {
+        return "the PLY header has no 'format' line";
+      }
+      return {};
+    }
+    std::ostringstream malformed;
+    malformed << "malformed PLY header line " << number << " '" << line << "'";
+    if (keyword == "format")
+    {
+      std::string name;
+      fields >> name;
+      if (name == "ascii")
+        encoding = Encoding::Ascii;
+      else if (name == "binary_little_endian")
+        encoding = Encoding::LittleEndian;
+      else if (name == "binary_big_endian")
+        encoding = Encoding::BigEndian;
+      else
+        return malformed.str();
+      haveFormat = true;
+    }
+    else if (keyword == "element")
+    {
+      Element element;
+      if (!(fields >> element.Name >> element.Count) || element.Count < 0)
+      {
+        return malformed.str();
+      }
+      elements.push_back(element);
+    }
+    else if (keyword == "property")
+    {
+      Property property;
+      std::string type;
+      fields >> type;
+      if (type == "list")
+      {
+        std::string countType, valueType;
+        fields >> countType >> valueType;
+        property.IsList = true;
+        property.CountType = ParseScalarType(countType);
+        property.ValueType = ParseScalarType(valueType);
+        if (!property.CountType.IsInteger)
+        {
+          return malformed.str();
+        }
+      }
+      else
+      {
+        property.ValueType = ParseScalarType(type);
+      }
+      if (elements.empty() || !(fields >> property.Name) || property.ValueType.Size == 0)
+      {
+        return malformed.str();
+      }
+      elements.back().Properties.push_back(property);
+    }
+    else if (!keyword.empty() && keyword != "comment" && keyword != "obj_info")
+    {
+      return malformed.str();
+    }
+  }
+  return "the PLY header has no 'end_header' line";
+}
+}
+
+std::string CheckPLYFile(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  Encoding encoding = Encoding::Ascii;
+  std::vector<Element> elements;
+  std::string error = ReadHeader(in, encoding, elements);
+  if (!error.empty())
+  {
+    return error;
+  }
+  long long numberOfVertices = -1;
+  for (const auto& element : elements)
+  {
+    if (element.Name == "vertex")
+    {
+      numberOfVertices = element.Count;
+    }
+  }
+  // Faces may come before the vertices; their largest index is checked at the end.
+  long long largestIndex = -1, largestIndexFace = -1;
+  ValueReader reader(in, encoding);
+  for (const auto& element : elements)
+  {
+    const bool isVertex = element.Name == "vertex", isFace = element.Name == "face";
+    for (long long item = 0; item < element.Count; ++item)
+    {
+      if (!reader.BeginItem())
+      {
+        std::ostringstream message;
+        message << "the file ends before " << element.Name << " " << item << " of "
+                << element.Count;
+        return message.str();
+      }
+      for (const auto& property : element.Properties)
+      {
+        std::ostringstream where;
+        where << element.Name << " " << item << " (property '" << property.Name << "')";
+        double real = 0;
+        long long count = 1;
+        if (property.IsList && !reader.Read(property.CountType, real, count))
+        {
+          return where.str() + (reader.Malformed ? " is malformed" : " is missing");
+        }
+        const bool isFaceIndices = isFace && property.IsList &&
+          (property.Name == "vertex_indices" || property.Name == "vertex_index");
+        if (isFaceIndices && count < 3)
+        {
+          std::ostringstream message;
+          message << "face " << item << " has " << count << " vertices; a face needs at least 3";
+          return message.str();
+        }
+        if (count < 0)
+        {
+          return where.str() + " has a negative list length";
+        }
+        for (long long k = 0; k < count; ++k)
+        {
+          long long integer = 0;
+          if (!reader.Read(property.ValueType, real, integer))
+          {
+            return where.str() + (reader.Malformed ? " is malformed" : " is missing");
+          }
+          if (isVertex && !property.IsList &&
+            (property.Name == "x" || property.Name == "y" || property.Name == "z") &&
+            !std::isfinite(real))
+          {
+            std::ostringstream message;
+            message << "vertex " << item << " has a NaN or infinite coordinate " << property.Name;
+            return message.str();
+          }
+          if (isFaceIndices)
+          {
+            if (!property.ValueType.IsInteger || integer < 0 ||
+              (numberOfVertices >= 0 && integer >= numberOfVertices))
+            {
+              std::ostringstream message;
+              message << "face " << item << " refers to vertex ";
+              if (property.ValueType.IsInteger)
+              {
+                message << integer;
+              }
+              else
+              {
+                message << real;
+              }
+              message << ", but the file has "
+                      << std::max(0LL, numberOfVertices) << " vertices (numbered from 0)";
+              return message.str();
+            }
+            if (integer > largestIndex)
+            {
+              largestIndex = integer;
+              largestIndexFace = item;
+            }
+          }
+        }
+      }
+    }
+  }
+  if (largestIndex >= std::max(0LL, numberOfVertices))
+  {
+    std::ostringstream message;
+    message << "face " << largestIndexFace << " refers to vertex " << largestIndex
+            << ", but the file has " << std::max(0LL, numberOfVertices)
+            << " vertices (numbered from 0)";
+    return message.str();
+  }
+  return {};
+}
+}
+}

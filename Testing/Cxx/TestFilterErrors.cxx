@@ -1,0 +1,171 @@
+// Hostile input to the filters: every filter rejects a triangle that refers to a point out
+// of range with an error (reading or writing out of bounds before); an exception inside a
+// filter (std::bad_alloc, or one carried out of a worker thread) becomes that filter's
+// error instead of ending the program.
+#include "MobiusTestUtilities.h"
+#include "vtkDenseCorrespondence.h"
+#include "vtkMobiusCenter.h"
+#include "vtkSO3Register.h"
+#include "vtkSphericalConformalMap.h"
+#include "vtkSphericalScaleGrid.h"
+
+#include "vtkExecutive.h"
+
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace
+{
+using mobius_test::BumpyMesh;
+
+// A copy of `mesh` whose polygon `cell` has its vertex `corner` replaced by `id`.
+vtkSmartPointer<vtkPolyData> WithPointId(
+  vtkPolyData* mesh, vtkIdType cell, int corner, vtkIdType id)
+{
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->DeepCopy(mesh);
+  vtkNew<vtkCellArray> polys;
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkIdType c = 0;
+  for (mesh->GetPolys()->InitTraversal(); mesh->GetPolys()->GetNextCell(npts, ids); ++c)
+  {
+    std::vector<vtkIdType> copy(ids, ids + npts);
+    if (c == cell)
+    {
+      copy[corner] = id;
+    }
+    polys->InsertNextCell(npts, copy.data());
+  }
+  result->SetPolys(polys);
+  return result;
+}
+
+// Runs `filter` and checks it fails with an error containing `words` and an empty output.
+int ExpectError(vtkPolyDataAlgorithm* filter, const std::string& words)
+{
+  int failures = 0;
+  mobius_test::MessageCatcher catcher(filter);
+  mobius_test::MessageCatcher executiveCatcher(filter->GetExecutive());
+  filter->Update();
+  if (catcher.Error.find(words) == std::string::npos)
+  {
+    std::cerr << filter->GetClassName() << ": expected an error containing '" << words
+              << "', got '" << catcher.Error << "'\n";
+    ++failures;
+  }
+  MOBIUS_EXPECT(filter->GetOutput()->GetNumberOfPoints() == 0);
+  return failures;
+}
+
+int TestOutOfRangeIds()
+{
+  int failures = 0;
+  auto mesh = BumpyMesh(2);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  for (vtkIdType bad : { n, n + 99999, vtkIdType(-5) })
+  {
+    const std::string words = "refers to point " + std::to_string(bad);
+    vtkNew<vtkSphericalConformalMap> map;
+    map->SetInputData(WithPointId(mesh, 7, 1, bad));
+    failures += ExpectError(map, words);
+
+    // A quad must be rejected before vtkTriangleFilter splits it (reading its points).
+    auto quads = WithPointId(mesh, 7, 1, bad);
+    vtkNew<vtkCellArray> polys;
+    polys->DeepCopy(quads->GetPolys());
+    const vtkIdType quad[4] = { 0, 1, bad, 2 };
+    polys->InsertNextCell(4, quad);
+    quads->SetPolys(polys);
+    vtkNew<vtkSphericalConformalMap> quadMap;
+    quadMap->SetInputData(quads);
+    failures += ExpectError(quadMap, words);
+
+    auto good = mobius_test::MakeSphericalMap(2, mobius_test::BumpySurface);
+    auto bent = WithPointId(good, 11, 2, bad);
+    vtkNew<vtkMobiusCenter> center;
+    center->SetInputData(bent);
+    failures += ExpectError(center, words);
+    vtkNew<vtkSphericalScaleGrid> grid;
+    grid->SetInputData(bent);
+    grid->SetResolution(16);
+    failures += ExpectError(grid, words);
+    vtkNew<vtkSO3Register> registration;
+    registration->SetSourceData(good);
+    registration->SetTargetData(bent);
+    registration->SetResolution(16);
+    failures += ExpectError(registration, words);
+    vtkNew<vtkDenseCorrespondence> correspondence;
+    correspondence->SetSourceData(good);
+    correspondence->SetTargetData(bent);
+    failures += ExpectError(correspondence, words);
+  }
+  return failures;
+}
+
+// The executive reports progress 0 and 1 around RequestData; the filters report values
+// between while they work.
+bool InsideRequestData(void* progress)
+{
+  const double fraction = *static_cast<double*>(progress);
+  return fraction > 0 && fraction < 1;
+}
+
+// An exception thrown while a filter runs (here by a progress observer, standing in for
+// std::bad_alloc in a worker thread) is reported as the filter's error; nothing escapes.
+int TestExceptionsBecomeErrors()
+{
+  int failures = 0;
+  vtkNew<vtkCallbackCommand> outOfMemory;
+  outOfMemory->SetCallback([](vtkObject*, unsigned long, void*, void* progress) {
+    if (InsideRequestData(progress))
+    {
+      throw std::bad_alloc();
+    }
+  });
+  vtkNew<vtkCallbackCommand> failing;
+  failing->SetCallback([](vtkObject*, unsigned long, void*, void* progress) {
+    if (InsideRequestData(progress))
+    {
+      throw std::runtime_error("observer failed");
+    }
+  });
+
+  auto map = mobius_test::MakeSphericalMap(2, mobius_test::BumpySurface);
+  vtkNew<vtkSphericalConformalMap> conformal;
+  conformal->SetInputData(BumpyMesh(2));
+  conformal->AddObserver(vtkCommand::ProgressEvent, outOfMemory);
+  failures += ExpectError(conformal, "out of memory");
+  vtkNew<vtkMobiusCenter> center;
+  center->SetInputData(map);
+  center->AddObserver(vtkCommand::ProgressEvent, failing);
+  failures += ExpectError(center, "observer failed");
+  vtkNew<vtkSphericalScaleGrid> grid;
+  grid->SetInputData(map);
+  grid->SetResolution(16);
+  grid->AddObserver(vtkCommand::ProgressEvent, outOfMemory);
+  failures += ExpectError(grid, "out of memory");
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceData(map);
+  registration->SetTargetData(map);
+  registration->SetResolution(16);
+  registration->AddObserver(vtkCommand::ProgressEvent, outOfMemory);
+  failures += ExpectError(registration, "out of memory");
+  vtkNew<vtkDenseCorrespondence> correspondence;
+  correspondence->SetSourceData(map);
+  correspondence->SetTargetData(map);
+  correspondence->AddObserver(vtkCommand::ProgressEvent, failing);
+  failures += ExpectError(correspondence, "observer failed");
+  return failures;
+}
+}
+
+int TestFilterErrors(int, char*[])
+{
+  int failures = 0;
+  failures += TestOutOfRangeIds();
+  failures += TestExceptionsBecomeErrors();
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
