@@ -64,13 +64,17 @@ std::string Refinement(vtkPolyData* refined, bool done)
   out << "{\"method\": \"spectral\", \"basis_size\": " << Number(FieldValue(refined, "RefinementBasisSize"))
       << ", \"kept_candidate\": " << Number(FieldValue(refined, "RefinementCandidate"))
       << ", \"orthogonality_residual\": " << Number(FieldValue(refined, "RefinementOrthogonalityResidual"))
+      << ", \"orientation_agreement\": " << Number(FieldValue(refined, "RefinementOrientationAgreement"))
+      << ", \"orientation_repaired\": " << (FieldValue(refined, "RefinementOrientationRepaired") == 1 ? "true" : "false")
       << ", \"candidates\": [";
   vtkDataArray* residuals = refined->GetFieldData()->GetArray("CandidateOrthogonalityResiduals");
   vtkDataArray* coverage = refined->GetFieldData()->GetArray("CandidateTargetCoverage");
-  for (vtkIdType c = 0; residuals && coverage && c < residuals->GetNumberOfTuples(); ++c)
+  vtkDataArray* orientation = refined->GetFieldData()->GetArray("CandidateOrientationAgreement");
+  for (vtkIdType c = 0; residuals && coverage && orientation && c < residuals->GetNumberOfTuples(); ++c)
   {
     out << (c ? ", " : "") << "{\"orthogonality_residual\": " << Number(residuals->GetComponent(c, 0))
-        << ", \"target_coverage\": " << Number(coverage->GetComponent(c, 0)) << "}";
+        << ", \"target_coverage\": " << Number(coverage->GetComponent(c, 0))
+        << ", \"orientation_agreement\": " << Number(orientation->GetComponent(c, 0)) << "}";
   }
   out << "]}";
   return out.str();

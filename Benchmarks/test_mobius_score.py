@@ -110,8 +110,8 @@ if self_map:
     check(abs(self_map["target_area"] - scale ** 2) < 1e-9 * scale ** 2, "target area")
     check(e["mean"] < 1e-9 and g["mean"] < 1e-9 and g["within"]["0.025"] == 1, "self-map scores 0")
 
-# The map onto the stretched copy (measured: Euclidean mean 0.020, geodesic mean 0.023, 95% of
-# the vertices within 0.05). The Euclidean errors are recomputed here from the CSV's mapped
+# The map onto the stretched copy (measured with the refinement: Euclidean mean 0.0032, every
+# vertex within 0.05; the Möbius map alone: 0.020 and 95%): small but not zero. The Euclidean errors are recomputed here from the CSV's mapped
 # positions and the mesh.
 header, stretched_rows = register_map(stretched, "stretched")
 columns = header.strip().split(",")
@@ -129,7 +129,7 @@ if near:
     check(abs(e["mean"] - own_mean) <= 1e-6 * own_mean, f"Euclidean mean {e['mean']} vs {own_mean}")
     check(abs(e["median"] - own_median) <= 1e-6 * own_median, f"Euclidean median {e['median']} vs {own_median}")
     check(abs(e["within"]["0.05"] - own_within) <= 1e-12, f"Euclidean within 0.05 {e['within']['0.05']}")
-    check(0.005 < e["mean"] < 0.05 and 0.005 < g["mean"] < 0.05, f"stretched means {e['mean']} {g['mean']}")
+    check(0.0005 < e["mean"] < 0.05 and 0.0005 < g["mean"] < 0.05, f"stretched means {e['mean']} {g['mean']}")
     check(g["mean"] >= e["mean"] and g["median"] >= e["median"] and g["p90"] >= e["p90"], "geodesic >= Euclidean")
     check(g["mean"] < 1.3 * e["mean"], "edge paths: a few % (sub-edge distances: up to ~20%) above Euclidean")
 

@@ -15,6 +15,7 @@
 #include "vtkPolyData.h"
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <future>
@@ -203,10 +204,19 @@ int vtkCorrespondenceRefinement::ComputeOutput(
 
     // Every candidate up to the screening size; the most orthogonal functional map goes on.
     const std::vector<Matrix3> starts = CandidateStarts(inputs[0], this->SearchCandidates);
+    vtkDataArray* determinantArray = inputs[0]->GetFieldData()->GetArray("Determinant");
+    const double bestDeterminant =
+      determinantArray && determinantArray->GetComponent(0, 0) < 0 ? -1.0 : 1.0;
     const std::vector<mobius::Index>& samples = surfaces[0].Samples;
-    std::vector<double> residuals, coverage;
+    std::vector<double> residuals, coverage, orientation;
+    std::vector<double> determinants;
+    for (const Matrix3& start : starts)
+    {
+      determinants.push_back(start.determinant() * bestDeterminant);
+    }
     mobius::SampleMap best;
     int bestCandidate = 0;
+    bool bestRightSide = false;
     for (size_t c = 0; c < starts.size(); ++c)
     {
       std::vector<mobius::Index> initial(samples.size());
@@ -221,9 +231,15 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       mobius::SampleMap screened =
         mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], initial, parameters);
       residuals.push_back(screened.OrthogonalityResidual);
+      orientation.push_back(screened.OrientationAgreement);
       coverage.push_back(screened.TargetCoverage);
-      if (c == 0 || screened.OrthogonalityResidual < best.OrthogonalityResidual)
+      // A map of the expected orientation beats one of the other; then the more orthogonal.
+      const bool rightSide = mobius::HasOrientation(screened, determinants[c] > 0);
+      if (c == 0 || (rightSide && !bestRightSide) ||
+        (rightSide == bestRightSide &&
+          screened.OrthogonalityResidual < best.OrthogonalityResidual))
       {
+        bestRightSide = rightSide;
         best = std::move(screened);
         bestCandidate = static_cast<int>(c);
       }
@@ -232,6 +248,14 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       {
         return 0;
       }
+    }
+    // A bilaterally symmetric shape can come out mapped onto the target's mirror image; the
+    // transform's determinant says which orientation the map should have.
+    const bool preserve = determinants[bestCandidate] > 0;
+    const bool reversed = !mobius::HasOrientation(best, preserve);
+    if (reversed && this->RepairOrientation)
+    {
+      best = mobius::RepairOrientation(surfaces[0], surfaces[1], best, preserve, 9, parameters);
     }
     if (parameters.FinalSize < this->BasisSize)
     {
@@ -254,6 +278,9 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     mobius::vtk::SetFieldValue(fieldData, "RefinementCandidate", bestCandidate);
     SetFieldVector(fieldData, "CandidateOrthogonalityResiduals", residuals);
     SetFieldVector(fieldData, "CandidateTargetCoverage", coverage);
+    SetFieldVector(fieldData, "CandidateOrientationAgreement", orientation);
+    mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationAgreement", best.OrientationAgreement);
+    mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationRepaired", reversed ? 1 : 0);
     mobius::vtk::SetFieldValue(
       fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
     mobius::vtk::SetFieldValue(

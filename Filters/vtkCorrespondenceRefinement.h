@@ -98,7 +98,7 @@ public:
 
   ///@{
   /**
-   * Vertices of each surface the iterations run on (farthest-point samples). Default 2000.
+   * Vertices of each surface the iterations run on (farthest-point samples). Default 1000.
    */
   vtkSetClampMacro(NumberOfSamples, int, 10, 1000000);
   vtkGetMacro(NumberOfSamples, int);
@@ -124,6 +124,19 @@ public:
 
   ///@{
   /**
+   * When the refined map reverses orientation although the transform it started from is a
+   * rotation (or preserves it although it is a reflection), as happens when a bilaterally
+   * symmetric shape is mapped onto the target's mirror image, retry ZoomOut with the sign of
+   * one or two low-frequency eigenfunctions flipped (the mirror symmetry negates the
+   * antisymmetric ones) and keep the best map of the right orientation. Default on.
+   */
+  vtkSetMacro(RepairOrientation, bool);
+  vtkGetMacro(RepairOrientation, bool);
+  vtkBooleanMacro(RepairOrientation, bool);
+  ///@}
+
+  ///@{
+  /**
    * Where the output's points are: on the target surface (TARGET, default) or on the
    * source surface (SOURCE).
    */
@@ -145,9 +158,10 @@ protected:
   int StartBasisSize = 4;
   double BasisGrowth = 0.15;
   int ScreeningBasisSize = 80;
-  int NumberOfSamples = 2000;
+  int NumberOfSamples = 1000;
   int FullResolutionIterations = 2;
   bool SearchCandidates = true;
+  bool RepairOrientation = true;
   int OutputGeometry = TARGET;
 
 private:

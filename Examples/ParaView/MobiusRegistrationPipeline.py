@@ -33,7 +33,8 @@ def build_pipeline():
         conformal = SphericalConformalMap(Input=mesh)  # noqa: F821 (from the plugin)
         centered.append(MobiusCenter(Input=conformal))  # noqa: F821
     aligned = SO3Register(Source=centered[0], Target=centered[1])  # noqa: F821
-    correspondence = DenseCorrespondence(Source=aligned, Target=centered[1])  # noqa: F821
+    # The Möbius map refined spectrally (from every candidate rotation): the accurate map.
+    correspondence = RefineCorrespondence(Source=aligned, Target=centered[1])  # noqa: F821
 
     # In the active view: the source's connectivity placed on the target surface, colored by
     # the target triangle each source vertex landed in.

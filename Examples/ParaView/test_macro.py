@@ -11,7 +11,7 @@ target = OpenDataFile(mesh)
 SetActiveSource(source)
 exec(open(macro).read(), dict(globals()))
 correspondence = GetActiveSource()
-assert correspondence.GetXMLName() == "DenseCorrespondence", correspondence.GetXMLName()
+assert correspondence.GetXMLName() == "RefineCorrespondence", correspondence.GetXMLName()
 result = servermanager.Fetch(correspondence)
 assert result.GetPointData().GetArray("MappedPoints") is not None
 assert result.GetNumberOfPoints() == servermanager.Fetch(source).GetNumberOfPoints()

@@ -58,8 +58,10 @@ dsa.WrapDataObject(out).PointData.append(p[:, 1].copy(), "Height")
 
 maps = [MobiusCenter(Input=SphericalConformalMap(Input=mesh)) for mesh in (source, target)]  # noqa: F821
 aligned = SO3Register(Source=maps[0], Target=maps[1], Resolution=args.resolution)  # noqa: F821
-# OutputGeometry "Source": the source surface, carrying the arrays brought over from the target.
-correspondence = DenseCorrespondence(Source=aligned, Target=maps[1], OutputGeometry="Source")  # noqa: F821
+# The Möbius map refined spectrally (RefineCorrespondence; DenseCorrespondence gives the
+# paper's map alone). OutputGeometry "Source": the source surface, carrying the arrays brought
+# over from the target.
+correspondence = RefineCorrespondence(Source=aligned, Target=maps[1], OutputGeometry="Source")  # noqa: F821
 correspondence.UpdatePipeline()
 
 result = servermanager.Fetch(correspondence)

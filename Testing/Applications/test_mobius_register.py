@@ -43,10 +43,16 @@ if summary:
     orthonormal = all(abs(sum(a * b for a, b in zip(rows[i], rows[j])) - (i == j)) < 1e-9
                       for i in range(3) for j in range(3))
     check(orthonormal and summary["determinant"] == 1, "demo rotation is a rotation")
-    check(summary["demo_mean_error_over_sqrt_area"] < 0.1,
+    # Measured: 0.021 with the refinement (the Möbius map alone: 0.058).
+    check(summary["demo_mean_error_over_sqrt_area"] < 0.04,
           f"demo error {summary['demo_mean_error_over_sqrt_area']}")
     check(summary["source_map"]["flipped_triangles"] == 0, "demo source map has no flips")
-    check([s["name"] for s in summary["stages"]][-1] == "dense correspondence", "demo stages")
+    check([s["name"] for s in summary["stages"]][-2:] == ["dense correspondence", "refinement"],
+          "demo stages")
+    refinement = summary["refinement"]
+    check(refinement is not None and len(refinement["candidates"]) >= 1 and
+          0 <= refinement["kept_candidate"] < len(refinement["candidates"]) and
+          refinement["basis_size"] == 80, f"demo refinement summary {refinement}")
 with open(os.path.join(work, "mobius-demo", "demo.csv")) as csv:
     header = csv.readline().strip().split(",")
     rows = csv.readlines()

@@ -43,23 +43,6 @@ vtkSmartPointer<vtkPolyData> WithPointId(
   return result;
 }
 
-// Runs `filter` and checks it fails with an error containing `words` and an empty output.
-int ExpectError(vtkPolyDataAlgorithm* filter, const std::string& words)
-{
-  int failures = 0;
-  mobius_test::MessageCatcher catcher(filter);
-  mobius_test::MessageCatcher executiveCatcher(filter->GetExecutive());
-  filter->Update();
-  if (catcher.Error.find(words) == std::string::npos)
-  {
-    std::cerr << filter->GetClassName() << ": expected an error containing '" << words
-              << "', got '" << catcher.Error << "'\n";
-    ++failures;
-  }
-  MOBIUS_EXPECT(filter->GetOutput()->GetNumberOfPoints() == 0);
-  return failures;
-}
-
 int TestOutOfRangeIds()
 {
   int failures = 0;

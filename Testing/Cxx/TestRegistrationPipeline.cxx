@@ -10,51 +10,6 @@
 
 #include <Eigen/Dense>
 
-#include <map>
-
-namespace
-{
-// Splits every triangle into four at its edge midpoints; the original points keep their ids.
-vtkSmartPointer<vtkPolyData> MidpointSubdivision(vtkPolyData* mesh)
-{
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->DeepCopy(mesh->GetPoints());
-  std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> midpoints;
-  auto middle = [&](vtkIdType a, vtkIdType b) {
-    const auto key = std::minmax(a, b);
-    auto found = midpoints.find(key);
-    if (found != midpoints.end())
-    {
-      return found->second;
-    }
-    double p[3], q[3];
-    points->GetPoint(a, p);
-    points->GetPoint(b, q);
-    const vtkIdType id = points->InsertNextPoint((p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2);
-    midpoints.emplace(key, id);
-    return id;
-  };
-  vtkNew<vtkCellArray> triangles;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
-  {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    mesh->GetCellPoints(c, npts, ids);
-    const vtkIdType ab = middle(ids[0], ids[1]), bc = middle(ids[1], ids[2]), ca = middle(ids[2], ids[0]);
-    const vtkIdType pieces[4][3] = { { ids[0], ab, ca }, { ids[1], bc, ab }, { ids[2], ca, bc },
-      { ab, bc, ca } };
-    for (const auto& piece : pieces)
-    {
-      triangles->InsertNextCell(3, piece);
-    }
-  }
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->SetPoints(points);
-  result->SetPolys(triangles);
-  return result;
-}
-}
 
 int TestRegistrationPipeline(int, char*[])
 {

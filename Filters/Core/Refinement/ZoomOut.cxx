@@ -186,6 +186,61 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
   return result;
 }
 
+std::vector<Index> SampleMapFromFunctionalMap(const SpectralSurface& source,
+  const SpectralSurface& target, const Eigen::MatrixXd& functionalMap, int numberOfThreads)
+{
+  const int k = static_cast<int>(functionalMap.rows());
+  const RowMatrix candidates =
+    GatherRows(target.Embedding, target.Samples, k) * functionalMap.transpose();
+  const std::vector<Index> nearest =
+    NearestRows(GatherRows(source.Embedding, source.Samples, k), candidates, numberOfThreads);
+  std::vector<Index> map(nearest.size());
+  for (size_t i = 0; i < nearest.size(); ++i)
+  {
+    map[i] = target.Samples[nearest[i]];
+  }
+  return map;
+}
+
+SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& reversed, bool preserveOrientation, int flips,
+  const ZoomOutParameters& parameters)
+{
+  const int k = std::min<int>(flips + 1, static_cast<int>(reversed.FunctionalMap.rows()));
+  const int last = k - 1;
+  // The source's own low-frequency functional map in the reversed map's frame.
+  const std::vector<Index> samples = reversed.TargetVertex;
+  const Eigen::MatrixXd low =
+    FitFunctionalMap(GatherRows(source.Embedding, source.Samples, k),
+      GatherRows(target.Embedding, samples, k));
+  ZoomOutParameters continued = parameters;
+  continued.StartSize = NextBasisSize(k, parameters.Growth);
+  SampleMap best = reversed;
+  bool found = false;
+  for (int first = 1; first <= last; ++first)
+  {
+    for (int second = first; second <= first; ++second)
+    {
+      Eigen::MatrixXd flipped = low;
+      flipped.row(first) *= -1;
+      if (second != first)
+      {
+        flipped.row(second) *= -1;
+      }
+      SampleMap repaired = ZoomOutOnSamples(source, target,
+        SampleMapFromFunctionalMap(source, target, flipped, parameters.NumberOfThreads),
+        continued);
+      if (HasOrientation(repaired, preserveOrientation) &&
+        (!found || repaired.OrthogonalityResidual < best.OrthogonalityResidual))
+      {
+        best = std::move(repaired);
+        found = true;
+      }
+    }
+  }
+  return best;
+}
+
 DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& samples, const ZoomOutParameters& parameters)
 {

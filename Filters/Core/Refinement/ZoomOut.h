@@ -80,6 +80,30 @@ struct SampleMap
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters);
 
+/// The sample map read off a functional map C (k x k, any k up to the basis size): each
+/// source sample goes to the target sample whose row of Phi_T C^T is nearest to its row of
+/// Phi_S.
+std::vector<Index> SampleMapFromFunctionalMap(const SpectralSurface& source,
+  const SpectralSurface& target, const Eigen::MatrixXd& functionalMap, int numberOfThreads);
+
+/// Tries to turn a map that reverses orientation where it should not (a bilaterally
+/// symmetric shape mapped onto the mirror image of the target: C = D C_true, with D = -1 on
+/// the source's antisymmetric eigenfunctions) into one that preserves it: negates, in turn,
+/// each of the first `flips` non-constant rows of the map's functional map at
+/// `parameters.StartSize` functions (plus the pair of each with the next), runs ZoomOut from
+/// each, and returns the most orthogonal result that agrees with the expected orientation,
+/// or `reversed` itself if none does.
+SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& reversed, bool preserveOrientation, int flips,
+  const ZoomOutParameters& parameters);
+
+/// True when a sample map has the orientation it should have: agreement above one half for
+/// an orientation-preserving map, below for an orientation-reversing one.
+inline bool HasOrientation(const SampleMap& map, bool preserveOrientation)
+{
+  return preserveOrientation ? map.OrientationAgreement > 0.5 : map.OrientationAgreement < 0.5;
+}
+
 /// A point on the target surface for every source vertex.
 struct DenseMap
 {
