@@ -8,7 +8,12 @@
 // resolution (exact rasterization, forward and inverse transform). register: vtkSO3Register
 // of the centered map, rotated by a fixed rotation, back onto itself at each resolution
 // (both signals, both transforms, correlation and refinement), with the angle error of the
-// rotation found. correspond: vtkDenseCorrespondence of that pair.
+// rotation found. correspond: vtkDenseCorrespondence of that pair. refine: the mesh against
+// a bent, rotated copy of itself (near-isometric, vertex i <-> vertex i): the Möbius map
+// (vtkDenseCorrespondence) and the refined one (vtkCorrespondenceRefinement), their
+// geodesic errors (edge paths, over sqrt(area)) and the refinement's seconds per stage.
+#include "CorrespondenceScore.h"
+#include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
@@ -17,11 +22,14 @@
 #include "vtkSurfaceMeshReader.h"
 
 #include "vtkDataArray.h"
+#include "vtkPointData.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+
+#include <Eigen/Eigenvalues>
 
 #include <sys/resource.h>
 
@@ -108,6 +116,96 @@ double AngleErrorDegrees(const double found[9], const double applied[9])
   return std::acos(std::max(-1.0, std::min(1.0, (trace - 1) / 2))) * 180 / 3.14159265358979323846;
 }
 
+// The mesh bent into an arc along its longest principal axis (radius 2.5 times the axis's
+// spread, little stretching: near-isometric), then turned by TestRotation.
+vtkSmartPointer<vtkPolyData> BentCopy(vtkPolyData* mesh)
+{
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    mean += Eigen::Map<const Eigen::Vector3d>(mesh->GetPoint(i)) / n;
+  }
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d d = Eigen::Map<const Eigen::Vector3d>(mesh->GetPoint(i)) - mean;
+    covariance += d * d.transpose() / n;
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(covariance); // ascending
+  const Eigen::Matrix3d frame = axes.eigenvectors();
+  const double radius = 5 * std::sqrt(axes.eigenvalues()[2]);
+  double r[9];
+  TestRotation(r);
+  const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> rotation(r);
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(mesh);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const Eigen::Vector3d y = frame.transpose() * (Eigen::Map<const Eigen::Vector3d>(mesh->GetPoint(i)) - mean);
+    const double angle = y[2] / radius;
+    const Eigen::Vector3d bent(y[0], (radius + y[1]) * std::cos(angle) - radius, (radius + y[1]) * std::sin(angle));
+    const Eigen::Vector3d moved = rotation * (frame * bent);
+    copy->GetPoints()->SetPoint(i, moved.data());
+  }
+  return copy;
+}
+
+// Geodesic error summary of a correspondence onto `targetMap` whose truth is "same input
+// vertex" (InputPointId).
+mobius::CorrespondenceErrorSummary GeodesicErrors(vtkPolyData* correspondence, vtkPolyData* targetMap)
+{
+  mobius::Points points(targetMap->GetNumberOfPoints(), 3);
+  vtkDataArray* surface = targetMap->GetPointData()->GetArray("SurfacePoints");
+  for (vtkIdType i = 0; i < targetMap->GetNumberOfPoints(); ++i)
+  {
+    surface->GetTuple(i, points.row(i).data());
+  }
+  mobius::Triangles triangles(targetMap->GetNumberOfCells(), 3);
+  for (vtkIdType t = 0; t < targetMap->GetNumberOfCells(); ++t)
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    targetMap->GetCellPoints(t, npts, ids);
+    triangles.row(t) << ids[0], ids[1], ids[2];
+  }
+  vtkDataArray* targetIds = targetMap->GetPointData()->GetArray("InputPointId");
+  std::vector<mobius::Index> byInputId(targetMap->GetNumberOfPoints(), -1);
+  for (vtkIdType i = 0; i < targetMap->GetNumberOfPoints(); ++i)
+  {
+    const auto id = static_cast<vtkIdType>(targetIds->GetTuple1(i));
+    if (id >= 0 && id < static_cast<vtkIdType>(byInputId.size()))
+    {
+      byInputId[id] = i;
+    }
+  }
+  vtkDataArray* cells = correspondence->GetPointData()->GetArray("TargetCellId");
+  vtkDataArray* weights = correspondence->GetPointData()->GetArray("TargetBarycentric");
+  vtkDataArray* sourceIds = correspondence->GetPointData()->GetArray("InputPointId");
+  std::vector<mobius::SurfacePoint> mapped;
+  std::vector<mobius::Index> truth;
+  for (vtkIdType i = 0; i < correspondence->GetNumberOfPoints(); ++i)
+  {
+    const auto id = static_cast<vtkIdType>(sourceIds->GetTuple1(i));
+    if (id < 0 || id >= static_cast<vtkIdType>(byInputId.size()) || byInputId[id] < 0)
+    {
+      continue;
+    }
+    mobius::SurfacePoint point;
+    point.Triangle = static_cast<mobius::Index>(cells->GetTuple1(i));
+    weights->GetTuple(i, point.Barycentric.data());
+    mapped.push_back(point);
+    truth.push_back(byInputId[id]);
+  }
+  mobius::CorrespondenceScore score;
+  std::string error;
+  if (!mobius::ScoreCorrespondence(points, triangles, mapped, truth, {}, score, error))
+  {
+    std::fprintf(stderr, "scoring failed: %s\n", error.c_str());
+  }
+  return score.GeodesicSummary;
+}
+
 std::vector<int> ParseList(const std::string& text)
 {
   std::vector<int> values;
@@ -123,7 +221,7 @@ std::vector<int> ParseList(const std::string& text)
 int Usage()
 {
   std::cerr << "usage: mobius-benchmark [--repeat N] [--resolutions 128,256,512]\n"
-               "                        [--stages map,grid,register,correspond] MESH [MESH ...]\n"
+               "                        [--stages map,grid,register,correspond,refine] MESH [MESH ...]\n"
                "Per stage: seconds (median of N runs, default 3), quality figures and peak memory,\n"
                "as Markdown tables. Meshes: .obj .off .ply .stl .vtp .vtk. Build Release to measure.\n";
   return 2;
@@ -134,7 +232,7 @@ int main(int argc, char* argv[])
 {
   int repeat = 3;
   std::vector<int> resolutions = { 128, 256, 512 };
-  std::string stages = "map,grid,register,correspond";
+  std::string stages = "map,grid,register,correspond,refine";
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i)
   {
@@ -167,7 +265,10 @@ int main(int argc, char* argv[])
   auto wants = [&stages](const char* stage) { return stages.find(stage) != std::string::npos; };
 
   int status = 0;
-  std::ostringstream mapTable, gridTable, registerTable, correspondTable;
+  std::ostringstream mapTable, gridTable, registerTable, correspondTable, refineTable;
+  refineTable << "| mesh | V | Möbius mean | Möbius <= 0.1 | refined mean | refined <= 0.1 | "
+                 "refinement s | bases s | candidates s | extension s | candidate kept |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   mapTable << "| mesh | V | map s | flow steps | mean QC | max QC | flips | center s | center steps | final mu |\n"
               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   gridTable << "| mesh | N | scale grid s |\n|---|---:|---:|\n";
@@ -282,6 +383,47 @@ int main(int argc, char* argv[])
         Field(correspondence, "ClampedPoints"));
       correspondTable << row;
     }
+    if (wants("refine"))
+    {
+      auto bent = BentCopy(mesh);
+      vtkNew<vtkSphericalConformalMap> targetMap;
+      targetMap->SetInputData(bent);
+      vtkNew<vtkMobiusCenter> targetCentered;
+      targetCentered->SetInputConnection(targetMap->GetOutputPort());
+      targetCentered->Update();
+      vtkNew<vtkSO3Register> registration;
+      registration->SetSourceData(centered);
+      registration->SetTargetConnection(targetCentered->GetOutputPort());
+      vtkNew<vtkDenseCorrespondence> mobiusMap;
+      mobiusMap->SetSourceConnection(registration->GetOutputPort());
+      mobiusMap->SetTargetConnection(targetCentered->GetOutputPort());
+      mobiusMap->Update();
+      vtkSmartPointer<vtkPolyData> refined;
+      const double seconds = TimeMedian(repeat, [&] {
+        vtkNew<vtkCorrespondenceRefinement> refinement;
+        refinement->SetSourceConnection(registration->GetOutputPort());
+        refinement->SetTargetConnection(targetCentered->GetOutputPort());
+        refinement->Update();
+        refined = refinement->GetOutput();
+      });
+      if (refined->GetNumberOfPoints() == 0)
+      {
+        std::fprintf(stderr, "%s: the refinement failed\n", file.c_str());
+        status = 1;
+      }
+      else
+      {
+        const auto before = GeodesicErrors(mobiusMap->GetOutput(), targetCentered->GetOutput());
+        const auto after = GeodesicErrors(refined, targetCentered->GetOutput());
+        std::snprintf(row, sizeof(row),
+          "| %s | %lld | %.4f | %.1f%% | %.4f | %.1f%% | %.2f | %.2f | %.2f | %.2f | %.0f |\n",
+          name.c_str(), static_cast<long long>(mesh->GetNumberOfPoints()), before.Mean,
+          100 * before.Within[2], after.Mean, 100 * after.Within[2], seconds,
+          Field(refined, "RefinementStageSeconds", 0), Field(refined, "RefinementStageSeconds", 1),
+          Field(refined, "RefinementStageSeconds", 2), Field(refined, "RefinementCandidate"));
+        refineTable << row;
+      }
+    }
     std::fprintf(stderr, "%s done, peak memory so far %.0f MB\n", name.c_str(), PeakMemoryMB());
   }
   if (wants("map"))
@@ -299,6 +441,12 @@ int main(int argc, char* argv[])
   if (wants("correspond"))
   {
     std::cout << "Dense correspondence\n\n" << correspondTable.str() << "\n";
+  }
+  if (wants("refine"))
+  {
+    std::cout << "Refinement (the mesh onto a bent, rotated copy; geodesic errors over sqrt(area); "
+                 "stage seconds of the last run)\n\n"
+              << refineTable.str() << "\n";
   }
   std::cout << "Peak resident memory: " << PeakMemoryMB() << " MB\n";
   return status;

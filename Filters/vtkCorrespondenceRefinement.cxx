@@ -18,6 +18,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <chrono>
 #include <future>
 #include <sstream>
 
@@ -165,6 +166,14 @@ int vtkCorrespondenceRefinement::ComputeOutput(
   }
 
   {
+    using Clock = std::chrono::steady_clock;
+    auto lapStart = Clock::now();
+    auto lap = [&lapStart]() {
+      const auto now = Clock::now();
+      const double seconds = std::chrono::duration<double>(now - lapStart).count();
+      lapStart = now;
+      return seconds;
+    };
     // The two eigenbases are independent: compute them side by side.
     mobius::SpectralSurface surfaces[2];
     std::string errors[2];
@@ -183,6 +192,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
         return 0;
       }
     }
+    const double basisSeconds = lap();
     this->UpdateProgress(0.5);
     if (this->GetAbortExecute())
     {
@@ -263,10 +273,12 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       parameters.FinalSize = this->BasisSize;
       best = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], best.TargetVertex, parameters);
     }
+    const double candidateSeconds = lap();
     this->UpdateProgress(0.85);
 
     const mobius::DenseMap dense =
       mobius::ExtendToAllVertices(surfaces[0], surfaces[1], best, parameters);
+    const double extensionSeconds = lap();
     mobius::vtk::SurfaceLocations locations;
     locations.LocatedTriangles = &maps[1].Triangles;
     locations.Triangle = dense.Triangle;
@@ -285,6 +297,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
     mobius::vtk::SetFieldValue(
       fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
+    const double seconds[3] = { basisSeconds, candidateSeconds, extensionSeconds };
+    mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 3);
   }
   this->UpdateProgress(1.0);
   return 1;

@@ -32,7 +32,13 @@
  * - `CandidateOrthogonalityResiduals`, `CandidateTargetCoverage` (one value per candidate
  *   tried, in candidate order): |C^T C - I|_F / sqrt(k) of its sampled functional map and the
  *   share of target samples it reaches;
- * - `RefinementOrthogonalityResidual` of the final map, `RefinementBasisSize`.
+ * - `CandidateOrientationAgreement` (per candidate): the share of sampled triangles whose
+ *   image keeps its orientation (near 1 for a rotation's map, near 0 for a mirror image);
+ * - `RefinementOrthogonalityResidual`, `RefinementOrientationAgreement` of the final map,
+ *   `RefinementOrientationRepaired` (1 if the kept candidate came out mirrored and was
+ *   repaired), `RefinementBasisSize`;
+ * - `RefinementStageSeconds` (3 values): eigenbases, candidate search, extension to every
+ *   vertex.
  *
  * Errors: inputs that are not spherical maps with `SurfacePoints`, meshes too small for
  * the basis, a Laplacian that cannot be factorized or an eigensolver that does not converge.
@@ -90,7 +96,7 @@ public:
   ///@{
   /**
    * Basis size up to which every candidate start is refined before they are compared; the
-   * best one then continues to BasisSize. Default 20.
+   * best one then continues to BasisSize. Default 30.
    */
   vtkSetClampMacro(ScreeningBasisSize, int, 1, 500);
   vtkGetMacro(ScreeningBasisSize, int);
@@ -157,7 +163,7 @@ protected:
   int BasisSize = 80;
   int StartBasisSize = 4;
   double BasisGrowth = 0.15;
-  int ScreeningBasisSize = 80;
+  int ScreeningBasisSize = 30;
   int NumberOfSamples = 1000;
   int FullResolutionIterations = 2;
   bool SearchCandidates = true;
