@@ -1,10 +1,12 @@
 #include "vtkMeshFileChecks.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <climits>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -357,6 +359,110 @@ std::string CheckPLYFile(const std::string& fileName)
             << ", but the file has " << std::max(0LL, numberOfVertices)
             << " vertices (numbered from 0)";
     return message.str();
+  }
+  return {};
+}
+
+namespace
+{
+long long FileSize(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary | std::ios::ate);
+  return in ? static_cast<long long>(in.tellg()) : -1;
+}
+
+std::string TooLarge(const std::string& what, long long claimed, long long values, long long size)
+{
+  std::ostringstream message;
+  message << "the header claims " << claimed << " " << what << " (" << values
+          << " values), more than a file of " << size << " bytes can hold";
+  return message.str();
+}
+}
+
+std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
+{
+  const long long size = FileSize(fileName);
+  if (size < 0)
+  {
+    return "cannot read the file";
+  }
+  std::ifstream in(fileName, std::ios::binary);
+  if (!xml)
+  {
+    // Every value takes at least one byte (a binary char; two in ASCII). Binary sections
+    // may hold newlines too: a line that does not parse as a section header is skipped.
+    std::string line;
+    while (std::getline(in, line))
+    {
+      std::istringstream fields(line);
+      std::string keyword;
+      fields >> keyword;
+      long long first = -1, second = -1;
+      if (keyword == "POINTS")
+      {
+        if ((fields >> first) && (first < 0 || first > size / 3))
+        {
+          return TooLarge("points", first, first < 0 || first > LLONG_MAX / 3 ? first : 3 * first, size);
+        }
+      }
+      else if (keyword == "POLYGONS" || keyword == "VERTICES" || keyword == "LINES" ||
+        keyword == "TRIANGLE_STRIPS")
+      {
+        if ((fields >> first >> second) && (first < 0 || second < 0 || first > size || second > size))
+        {
+          std::string cells = keyword;
+          std::transform(cells.begin(), cells.end(), cells.begin(),
+            [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+          return TooLarge(cells, first, std::max(first, second), size);
+        }
+      }
+      else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
+      {
+        if ((fields >> first) && (first < 0 || first > size))
+        {
+          return TooLarge(keyword == "POINT_DATA" ? "point data tuples" : "cell data tuples",
+            first, first, size);
+        }
+      }
+    }
+    return {};
+  }
+  // XML: the Piece attributes come before the data; read the start of the file only.
+  std::string head(static_cast<size_t>(std::min<long long>(size, 1 << 20)), '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
+  // zlib, the best of VTK's compressors, shrinks data at most about 1000-fold.
+  const long long ratio = head.find("compressor=") != std::string::npos ? 1100 : 1;
+  const struct
+  {
+    const char* Attribute;
+    const char* What;
+    long long ValuesPerItem;
+  } counts[] = { { "NumberOfPoints=\"", "points", 3 }, { "NumberOfVerts=\"", "vertex cells", 1 },
+    { "NumberOfLines=\"", "line cells", 1 }, { "NumberOfStrips=\"", "strips", 1 },
+    { "NumberOfPolys=\"", "polygons", 1 } };
+  for (const auto& count : counts)
+  {
+    for (auto at = head.find(count.Attribute); at != std::string::npos;
+         at = head.find(count.Attribute, at + 1))
+    {
+      const char* start = head.c_str() + at + std::strlen(count.Attribute);
+      char* end = nullptr;
+      errno = 0;
+      const long long claimed = std::strtoll(start, &end, 10);
+      if (end == start)
+      {
+        continue;
+      }
+      if (claimed < 0 || errno == ERANGE || claimed > size * ratio / count.ValuesPerItem)
+      {
+        const long long values = claimed > LLONG_MAX / count.ValuesPerItem
+          ? claimed
+          : claimed * count.ValuesPerItem;
+        return TooLarge(count.What, claimed, values, size);
+      }
+    }
   }
   return {};
 }
