@@ -185,6 +185,18 @@ for number, (name, (data, words)) in enumerate(sorted(sized.items())):
     expect_failure([name, hand, "-o", f"sized{number}", "--quiet"], [name, *words], [f"sized{number}"],
                    timeout=120)
 
+# VTK's own messages (here a warning of the legacy reader, which nobody observes) become the
+# program's one-line warnings, each once, and --quiet silences them.
+with open(os.path.join(work, "newer.vtk"), "w") as f:
+    f.write("# vtk DataFile Version 5.2\nt\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n"
+            "POLYGONS 5 12\nOFFSETS vtktypeint64\n0 3 6 9 12\nCONNECTIVITY vtktypeint64\n0 2 1 0 1 3 1 2 3 0 3 2\n")
+code, _, err = run("newer.vtk", "newer.vtk", "-o", "newer", "--resolution", "16")
+warned = [line for line in err.splitlines() if "Reading file version" in line]
+check(code == 0 and len(warned) == 1 and warned[0].startswith("mobius-register: warning: VTK: Reading file version")
+      and "\x1b" not in err and "Warning: In" not in err, f"VTK's warning as the program's: {code} {err!r}")
+code, _, err = run("newer.vtk", "newer.vtk", "-o", "newer", "--resolution", "16", "--quiet", "--force")
+check(code == 0 and err == "", f"--quiet silences VTK's warning: {code} {err!r}")
+
 # Not a regular file: a directory says so; a device that never ends must not hang the reader.
 os.makedirs(os.path.join(work, "folder.off"), exist_ok=True)
 expect_failure(["folder.off", hand, "-o", "notfile1"], ["folder.off", "is a directory"], ["notfile1"])
