@@ -282,9 +282,14 @@ def uv_ellipsoid(rings, segments, scale):
 write_mesh("needle.off", *uv_ellipsoid(40, 40, (1, 1, 1000)))
 for name in ("prism.off", "needle.off"):
     expect_failure([name, hand, "-o", "poor"], [name, "degenerate", "--allow-poor-maps"], ["poor"])
-    code, _, err = run(name, hand, "-o", "allowed-" + name[:-4], "--allow-poor-maps", "--resolution", "64")
+    code, out, err = run(name, hand, "-o", "allowed-" + name[:-4], "--allow-poor-maps", "--resolution", "64",
+                         "--json")
     check(code == 0 and os.path.exists(os.path.join(work, f"allowed-{name[:-4]}.csv")),
           f"{name} with --allow-poor-maps: {code} {err!r}")
+    if code == 0:
+        maps = json.loads(out)
+        check("squashed" in (maps["source_map"]["degenerate"] or "") and maps["target_map"]["degenerate"] is None,
+              f"{name}: the JSON summary names the degenerate map: {maps['source_map']}")
 
 # A tiny valid mesh (an icosahedron, 12 vertices, fewer than twice the refinement's basis):
 # the refinement is skipped with a warning, the Möbius map is the result.
