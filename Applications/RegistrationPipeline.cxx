@@ -48,7 +48,9 @@ public:
       // The filters' hints name their VTK properties; on the command line the options.
       for (const auto& hint : { std::make_pair(std::string("Set FillHoles"), std::string("Use --fill-holes")),
              std::make_pair(std::string("Set KeepLargestComponent"),
-               std::string("Use --keep-largest-component")) })
+               std::string("Use --keep-largest-component")),
+             std::make_pair(std::string("a setting such as Resolution"),
+               std::string("an option such as --resolution")) })
       {
         const auto at = text.find(hint.first);
         if (at != std::string::npos)

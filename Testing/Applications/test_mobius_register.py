@@ -5,6 +5,7 @@ import itertools
 import json
 import math
 import os
+import resource
 import shutil
 import struct
 import subprocess
@@ -16,11 +17,15 @@ os.makedirs(work)
 failures = []
 
 
-def run(*arguments, env=None, cwd=work, timeout=600):
-    """Exit code, standard output and error; a run that hangs is killed and counts as code None."""
+def run(*arguments, env=None, cwd=work, timeout=600, memory=None):
+    """Exit code, standard output and error; a run that hangs is killed and counts as code None.
+    `memory`: a limit on the program's address space, in bytes."""
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
     try:
         result = subprocess.run([program, *arguments], cwd=cwd, env=env, capture_output=True,
-                                text=True, errors="replace", timeout=timeout)
+                                text=True, errors="replace", timeout=timeout,
+                                preexec_fn=limit if memory else None)
     except subprocess.TimeoutExpired:
         return None, "", f"timed out after {timeout} s"
     return result.returncode, result.stdout, result.stderr
@@ -213,6 +218,13 @@ for option, value in (("--smoothing", "nan"), ("--smoothing", "inf"), ("--smooth
                    timeout=60)
 code, _, err = run(hand, hand, "-o", "option", "--resolution", "100000")
 check("fits" in err, f"--resolution 100000 says what would fit: {err!r}")
+# Running out of memory part way (here a 700 MB address space for --resolution 4096, which the
+# machine's memory would allow; it needs about 1.2 GB) is an error of the stage, exit status 1,
+# not "terminate called". (--resolution 64 runs in 500 MB.)
+code, _, err = run(hand, hand, "-o", "starved", "--resolution", "4096", "--quiet", memory=700 * 2 ** 20)
+check(code == 1 and len(err.strip().splitlines()) == 1 and "out of memory" in err and "--resolution" in err
+      and "terminate" not in err, f"out of memory: {code} {err!r}")
+check(not [f for f in os.listdir(work) if f.startswith("starved")], "out of memory: no output")
 # The help files an existing output under status 1, as the program does.
 code, out, _ = run("--help")
 check("existing file without --force" in " ".join(out.split("Exit status:")[-1].split("2 for")[0].split()),
