@@ -466,5 +466,38 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
   }
   return {};
 }
+
+std::string CheckSTLFile(const std::string& fileName)
+{
+  const long long size = FileSize(fileName);
+  std::ifstream in(fileName, std::ios::binary);
+  std::string head(static_cast<size_t>(std::max(0LL, std::min<long long>(size, 256))), '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  const bool text = std::all_of(head.begin(), head.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return (u >= 32 && u < 127) || c == '\n' || c == '\r' || c == '\t';
+  });
+  if (head.compare(0, 5, "solid") == 0 && text)
+  {
+    return {};
+  }
+  if (size < 84)
+  {
+    return "a binary STL file needs an 84-byte header; this one has " + std::to_string(size) +
+      " bytes";
+  }
+  const auto byte = [&head](int k) { return static_cast<unsigned char>(head[k]); };
+  const long long claimed = static_cast<long long>(byte(80)) | (static_cast<long long>(byte(81)) << 8) |
+    (static_cast<long long>(byte(82)) << 16) | (static_cast<long long>(byte(83)) << 24);
+  const long long room = (size - 84) / 50;
+  if (claimed > room)
+  {
+    std::ostringstream message;
+    message << "the header claims " << claimed << " triangles, but a file of " << size
+            << " bytes holds at most " << room;
+    return message.str();
+  }
+  return {};
+}
 }
 }

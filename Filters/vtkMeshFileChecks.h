@@ -30,6 +30,11 @@ std::string CheckPLYFile(const std::string& fileName);
 /// a few bytes claiming 2e9 points would otherwise make them ask for tens of gigabytes
 /// (and, when that fails, write through a null array).
 std::string CheckVTKFileSizes(const std::string& fileName, bool xml);
+
+/// Fails when a binary STL file's triangle count claims more 50-byte triangles than the file
+/// holds: VTK's STL reader allocates the claim (2e9 triangles end the program in
+/// vtkCellArray::AllocateExact). ASCII STL files (text from "solid" on) pass.
+std::string CheckSTLFile(const std::string& fileName);
 }
 }
 

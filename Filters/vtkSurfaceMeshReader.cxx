@@ -433,6 +433,7 @@ int vtkSurfaceMeshReader::ComputeOutput(
     }
     else if (extension == "stl")
     {
+      error = mobius::vtk::CheckSTLFile(fileName);
       auto stl = vtkSmartPointer<vtkSTLReader>::New();
       stl->SetFileName(fileName.c_str());
       reader = stl;

@@ -178,6 +178,9 @@ sized = {
                  b'<PolyData><Piece NumberOfPoints="2000000000" NumberOfPolys="4">\n'
                  b'<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0 0 0 1'
                  b'</DataArray></Points>\n</Piece></PolyData></VTKFile>\n', ["claims 2000000000 points"]),
+    "huge.stl": (b"x" * 80 + struct.pack("<I", 2000000000) + b"".join(
+        struct.pack("<12fH", 0, 0, 0, *tetra_points[a], *tetra_points[b], *tetra_points[c], 0)
+        for a, b, c in tetra_faces), ["claims 2000000000 triangles"]),
     # Broken XML: the parser inside VTK's reader reports it to nobody; it must not reach the
     # terminal in VTK's log format, next to the program's own line.
     "broken.vtp": (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1">\n<PolyData><Piece Number',

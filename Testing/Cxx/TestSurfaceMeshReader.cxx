@@ -185,6 +185,14 @@ int TestHostileSizes(const std::string& dir)
     "<PolyData><Piece NumberOfPoints=\"4\" NumberOfPolys=\"2000000000\">\n"
     "</Piece></PolyData></VTKFile>\n");
   failures += ExpectError(dir + "/huge.vtp", "the header claims 2000000000 polygons");
+  // A binary STL whose count claims 2e9 triangles and holds one: VTK's reader would allocate
+  // the claim (and end the program).
+  std::string stl(80, 'x');
+  const unsigned char count[4] = { 0x00, 0x94, 0x35, 0x77 }; // 2,000,000,000, little-endian
+  stl.append(reinterpret_cast<const char*>(count), 4);
+  stl.append(50, '\0');
+  WriteText(dir + "/huge.stl", stl);
+  failures += ExpectError(dir + "/huge.stl", "the header claims 2000000000 triangles");
   // Not regular files: a directory, and a device that never ends.
   const std::string folder = dir + "/folder.off";
   mkdir(folder.c_str(), 0755);
@@ -280,6 +288,10 @@ int TestSurfaceMeshReader(int argc, char* argv[])
   stl->SetFileName((dir + "/reader.STL").c_str()); // extensions are case-insensitive
   stl->Write();
   failures += ExpectMesh(dir + "/reader.STL", n, m); // the STL reader merges points again
+  stl->SetFileTypeToBinary(); // its triangle count is checked against the file size
+  stl->SetFileName((dir + "/reader-binary.stl").c_str());
+  stl->Write();
+  failures += ExpectMesh(dir + "/reader-binary.stl", n, m);
 
   // A tetrahedron in OFF with comments, counts on the header line and a face color; and
   // the same in OBJ.
