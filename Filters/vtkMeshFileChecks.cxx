@@ -371,6 +371,23 @@ long long FileSize(const std::string& fileName)
   return in ? static_cast<long long>(in.tellg()) : -1;
 }
 
+// A legacy FIELD block's array header, "name components tuples type".
+bool IsFieldArrayHeader(const std::string& line, long long& components, long long& tuples)
+{
+  static const char* const types[] = { "bit", "char", "signed_char", "unsigned_char", "short",
+    "unsigned_short", "int", "unsigned_int", "long", "unsigned_long", "vtktypeint64",
+    "vtktypeuint64", "float", "double", "string", "utf8_string", "vtkIdType" };
+  std::istringstream fields(line);
+  std::string name, type, rest;
+  if (!(fields >> name >> components >> tuples >> type) || (fields >> rest))
+  {
+    return false;
+  }
+  char* end = nullptr;
+  std::strtod(name.c_str(), &end);
+  return *end != '\0' && std::find(std::begin(types), std::end(types), type) != std::end(types);
+}
+
 std::string TooLarge(const std::string& what, long long claimed, long long values, long long size)
 {
   std::ostringstream message;
@@ -417,6 +434,17 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
           return TooLarge(cells, first, std::max(first, second), size);
         }
       }
+      else if (IsFieldArrayHeader(line, first, second))
+      {
+        // "name components tuples type" in a FIELD block: components x tuples values.
+        if (first < 0 || second < 0 || (first > 0 && second > size / first))
+        {
+          std::ostringstream message;
+          message << "the field array line '" << line << "' claims " << first << " x " << second
+                  << " values, more than a file of " << size << " bytes can hold";
+          return message.str();
+        }
+      }
       else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
       {
         if ((fields >> first) && (first < 0 || first > size))
@@ -442,6 +470,7 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
   } counts[] = { { "NumberOfPoints=\"", "points", 3 }, { "NumberOfVerts=\"", "vertex cells", 1 },
     { "NumberOfLines=\"", "line cells", 1 }, { "NumberOfStrips=\"", "strips", 1 },
     { "NumberOfPolys=\"", "polygons", 1 } };
+  long long largestCount = 1;
   for (const auto& count : counts)
   {
     for (auto at = head.find(count.Attribute); at != std::string::npos;
@@ -461,6 +490,33 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
           ? claimed
           : claimed * count.ValuesPerItem;
         return TooLarge(count.What, claimed, values, size);
+      }
+      largestCount = std::max(largestCount, claimed);
+    }
+  }
+  // A data array holds components x tuples values, the tuples being points, cells or (for
+  // field data) NumberOfTuples.
+  for (const char* attribute : { "NumberOfComponents=\"", "NumberOfTuples=\"" })
+  {
+    const bool components = attribute[8] == 'C';
+    for (auto at = head.find(attribute); at != std::string::npos; at = head.find(attribute, at + 1))
+    {
+      const char* start = head.c_str() + at + std::strlen(attribute);
+      char* end = nullptr;
+      errno = 0;
+      const long long claimed = std::strtoll(start, &end, 10);
+      if (end == start)
+      {
+        continue;
+      }
+      const long long limit = size * ratio / (components ? largestCount : 1);
+      if (claimed < 0 || errno == ERANGE || claimed > limit)
+      {
+        std::ostringstream message;
+        message << "a data array claims " << claimed
+                << (components ? " components per tuple" : " tuples") << ", more than a file of "
+                << size << " bytes can hold";
+        return message.str();
       }
     }
   }

@@ -185,6 +185,16 @@ int TestHostileSizes(const std::string& dir)
     "<PolyData><Piece NumberOfPoints=\"4\" NumberOfPolys=\"2000000000\">\n"
     "</Piece></PolyData></VTKFile>\n");
   failures += ExpectError(dir + "/huge.vtp", "the header claims 2000000000 polygons");
+  WriteText(dir + "/huge-field.vtk", legacyHeader +
+      "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 1 4\n3 0 2 1\nPOINT_DATA 4\n"
+      "FIELD FieldData 1\nbig 1000000000 4 float\n0 0 0 0\n");
+  failures += ExpectError(dir + "/huge-field.vtk", "claims 1000000000 x 4 values");
+  WriteText(dir + "/components.vtp",
+    "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\">\n"
+    "<PolyData><Piece NumberOfPoints=\"4\" NumberOfPolys=\"1\">\n<Points><DataArray "
+    "type=\"Float32\" NumberOfComponents=\"1000000000\" format=\"ascii\">0 0 0</DataArray>"
+    "</Points></Piece></PolyData></VTKFile>\n");
+  failures += ExpectError(dir + "/components.vtp", "claims 1000000000 components per tuple");
   // A binary STL whose count claims 2e9 triangles and holds one: VTK's reader would allocate
   // the claim (and end the program).
   std::string stl(80, 'x');
