@@ -53,20 +53,21 @@ std::string UsageText()
           "  --iterations N         maximum flow steps (default "
        << defaults.FlowIterations
        << ")\n"
-          "  --tolerance T          flow convergence tolerance (default "
+          "  --tolerance T          flow convergence tolerance, 0 to 1 (default "
        << defaults.FlowTolerance
        << ")\n"
           "  --no-center-flow       plain CMCF: no Moebius centering between flow steps\n"
           "  --fill-holes           close holes instead of rejecting open meshes\n"
           "  --keep-largest-component  map only the largest connected component\n"
           "  --allow-poor-maps      write the result even when a conformal map is degenerate\n"
-          "                         (triangles flipped after repair, area collapsed, flow\n"
-          "                         not converged, squeezed-region refinement failed)\n"
+          "                         (triangles flipped after repair, area collapsed or\n"
+          "                         squashed, flow not converged, squeezed-region\n"
+          "                         refinement failed)\n"
           "Registration:\n"
-          "  --resolution N         scale-factor grid size, even (default "
+          "  --resolution N         scale-factor grid size, even, as memory allows (default "
        << defaults.Resolution
        << ")\n"
-          "  --smoothing T          heat-kernel smoothing time (default "
+          "  --smoothing T          heat-kernel smoothing time, 0 to 1 (default "
        << defaults.SmoothingTime
        << ")\n"
           "  --transform MODE       rotation | reflection | both (default rotation)\n"
