@@ -69,6 +69,14 @@ def centered_map(path, errors):
     center.SetInputConnection(conformal.GetOutputPort())
     center.Update()
     result = vtkPolyData()
+    if conformal.GetOutput().GetNumberOfPoints() > 0:
+        # A degenerate map (flips left, squashed triangles, no convergence) would give a
+        # meaningless correspondence: count it as a failure, with the filter's reason.
+        field = conformal.GetOutput().GetFieldData()
+        if field.GetArray("DegenerateMap") and field.GetArray("DegenerateMap").GetValue(0) == 1:
+            reason = field.GetAbstractArray("DegenerateMapReason")
+            errors.messages.append("degenerate conformal map: " + (reason.GetValue(0) if reason else "?"))
+            return result
     result.DeepCopy(center.GetOutput())
     return result
 
