@@ -1,5 +1,8 @@
 #include "CommandLine.h"
 
+#include "vtkSO3Register.h"
+
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <vector>
@@ -50,17 +53,21 @@ std::string UsageText()
           "  --iterations N         maximum flow steps (default "
        << defaults.FlowIterations
        << ")\n"
-          "  --tolerance T          flow convergence tolerance (default "
+          "  --tolerance T          flow convergence tolerance, 0 to 1 (default "
        << defaults.FlowTolerance
        << ")\n"
           "  --no-center-flow       plain CMCF: no Moebius centering between flow steps\n"
           "  --fill-holes           close holes instead of rejecting open meshes\n"
           "  --keep-largest-component  map only the largest connected component\n"
+          "  --allow-poor-maps      write the result even when a conformal map is degenerate\n"
+          "                         (triangles flipped after repair, area collapsed or\n"
+          "                         squashed, flow not converged, squeezed-region\n"
+          "                         refinement failed)\n"
           "Registration:\n"
-          "  --resolution N         scale-factor grid size, even (default "
+          "  --resolution N         scale-factor grid size, even, as memory allows (default "
        << defaults.Resolution
        << ")\n"
-          "  --smoothing T          heat-kernel smoothing time (default "
+          "  --smoothing T          heat-kernel smoothing time, 0 to 1 (default "
        << defaults.SmoothingTime
        << ")\n"
           "  --transform MODE       rotation | reflection | both (default rotation)\n"
@@ -81,7 +88,10 @@ std::string UsageText()
           "  --json                 print a machine-readable summary on standard output\n"
           "  --version, -h/--help\n"
           "\n"
-          "Exit status: 0 on success, 1 if a mesh cannot be read or mapped, 2 for usage errors.\n";
+          "Exit status: 0 on success; 1 if a mesh cannot be read or mapped (a degenerate map\n"
+          "included, unless --allow-poor-maps), or an output cannot be written (an existing\n"
+          "file without --force included); 2 for usage errors (unknown options, values out\n"
+          "of range, wrong number of meshes, no -o).\n";
   return text.str();
 }
 
@@ -133,6 +143,10 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
     {
       commandLine.Pipeline.KeepLargestComponent = true;
     }
+    else if (option == "--allow-poor-maps")
+    {
+      commandLine.Pipeline.AllowPoorMaps = true;
+    }
     else if (option == "-o" || option == "--output")
     {
       if (!value(commandLine.Output))
@@ -179,16 +193,31 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
         error = "--resolution must be even and at least 4, not " + text;
         return false;
       }
+      // Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
+      if (option == "--resolution" && number > vtkSO3Register::LargestResolution())
+      {
+        std::ostringstream message;
+        message << "--resolution " << number << " needs about "
+                << vtkSO3Register::EstimateMemory(number) / 1e9
+                << " GB, more than this machine's memory; at most "
+                << vtkSO3Register::LargestResolution() << " fits";
+        error = message.str();
+        return false;
+      }
       (option == "--iterations"       ? commandLine.Pipeline.FlowIterations
           : option == "--resolution" ? commandLine.Pipeline.Resolution
                                      : commandLine.Pipeline.NumberOfCandidates) = number;
     }
     else if (option == "--tolerance" || option == "--smoothing")
     {
+      // NaN passes every comparison and an infinite or huge smoothing time wipes out the
+      // signals (exp(-l(l+1) t) leaves nothing of degree 1 and up well before t = 1): the
+      // run would silently return garbage. A relative change above 1 is no tolerance either.
       double number = 0;
-      if (!value(text) || !ParseNumber(text, number) || number < 0)
+      if (!value(text) || !ParseNumber(text, number) || !std::isfinite(number) || number < 0 ||
+        number > 1)
       {
-        error = error.empty() ? option + " needs a non-negative number, not '" + text + "'" : error;
+        error = error.empty() ? option + " needs a number from 0 to 1, not '" + text + "'" : error;
         return false;
       }
       (option == "--tolerance" ? commandLine.Pipeline.FlowTolerance

@@ -1,5 +1,8 @@
 #include "JsonSummary.h"
 
+#include "vtkFieldData.h"
+#include "vtkStringArray.h"
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -90,7 +93,15 @@ std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
       << ", \"mean_quasi_conformal_distortion\": " << Number(FieldValue(map, "MeanQuasiConformalDistortion"))
       << ", \"max_quasi_conformal_distortion\": " << Number(FieldValue(map, "MaxQuasiConformalDistortion"))
       << ", \"centering_iterations\": " << Number(FieldValue(centered, "CenteringIterations"))
-      << ", \"center_of_mass_norm\": " << Number(FieldValue(centered, "CenterOfMassNorm")) << "}";
+      << ", \"center_of_mass_norm\": " << Number(FieldValue(centered, "CenterOfMassNorm"));
+  // null for a good map; the reason for one written with --allow-poor-maps.
+  auto reason =
+    vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
+  out << ", \"degenerate\": "
+      << (FieldValue(map, "DegenerateMap") == 1 && reason && reason->GetNumberOfValues() > 0
+             ? Quoted(reason->GetValue(0))
+             : std::string("null"))
+      << "}";
   return out.str();
 }
 }

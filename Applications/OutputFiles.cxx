@@ -8,7 +8,10 @@
 #include "vtkPointData.h"
 #include "vtkXMLPolyDataWriter.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <utility>
 #include <fstream>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -167,13 +170,46 @@ bool OutputFiles::WritePicture(
 
 bool OutputFiles::Commit(std::string& error)
 {
+  // All or nothing: a file being replaced (--force) is moved aside first, and if any rename
+  // fails, the files already moved into place are taken back and the old ones restored, so
+  // OUT.vtp never stays behind without its OUT.csv.
+  std::vector<std::pair<std::string, std::string>> asides; // final path, where the old file is
+  std::vector<std::string> placed;
+  auto undo = [&]() {
+    for (const auto& path : placed)
+    {
+      std::remove(path.c_str());
+    }
+    for (const auto& aside : asides)
+    {
+      std::rename(aside.second.c_str(), aside.first.c_str());
+    }
+  };
   for (const auto& path : this->Written)
   {
+    struct stat information;
+    if (stat(path.c_str(), &information) == 0 && S_ISREG(information.st_mode))
+    {
+      const std::string aside = path + ".previous-" + std::to_string(getpid());
+      if (std::rename(path.c_str(), aside.c_str()) != 0)
+      {
+        error = path + ": cannot replace the existing file (" + std::strerror(errno) + ")";
+        undo();
+        return false;
+      }
+      asides.emplace_back(path, aside);
+    }
     if (std::rename(this->Temporary(path).c_str(), path.c_str()) != 0)
     {
-      error = path + ": cannot move the finished file into place";
+      error = path + ": cannot move the finished file into place (" + std::strerror(errno) + ")";
+      undo();
       return false;
     }
+    placed.push_back(path);
+  }
+  for (const auto& aside : asides)
+  {
+    std::remove(aside.second.c_str());
   }
   this->Written.clear();
   return true;

@@ -13,10 +13,12 @@
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkStringArray.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace
 {
@@ -42,6 +44,19 @@ public:
       while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
       {
         text.pop_back();
+      }
+      // The filters' hints name their VTK properties; on the command line the options.
+      for (const auto& hint : { std::make_pair(std::string("Set FillHoles"), std::string("Use --fill-holes")),
+             std::make_pair(std::string("Set KeepLargestComponent"),
+               std::string("Use --keep-largest-component")),
+             std::make_pair(std::string("a setting such as Resolution"),
+               std::string("an option such as --resolution")) })
+      {
+        const auto at = text.find(hint.first);
+        if (at != std::string::npos)
+        {
+          text.replace(at, hint.first.size(), hint.second);
+        }
       }
       if (event == vtkCommand::ErrorEvent)
       {
@@ -136,6 +151,17 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
     {
       return false;
     }
+    // A degenerate map still has the right shape and would go through every later stage: a
+    // wrong correspondence would be written as if it were a result.
+    if (!options.AllowPoorMaps && FieldValue(*maps[k], "DegenerateMap") == 1)
+    {
+      auto reason =
+        vtkStringArray::SafeDownCast((*maps[k])->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
+      error = names[k] + ": the conformal map is degenerate: " +
+        (reason && reason->GetNumberOfValues() > 0 ? reason->GetValue(0) : std::string("see its field data")) +
+        "; --allow-poor-maps writes the result anyway";
+      return false;
+    }
     vtkNew<vtkMobiusCenter> center;
     center->SetInputData(*maps[k]);
     center->SetTolerance(options.CenteringTolerance);
@@ -171,6 +197,17 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   result.Correspondence = result.MobiusCorrespondence;
   if (!options.Refine)
   {
+    return true;
+  }
+  // The refinement's spectral search compares BasisSize eigenfunctions and needs about
+  // twice as many vertices to sample them: on a smaller mesh the Möbius map is the answer.
+  const vtkIdType smallest = std::min(
+    result.Aligned->GetNumberOfPoints(), result.TargetCentered->GetNumberOfPoints());
+  if (smallest < 2 * static_cast<vtkIdType>(options.BasisSize))
+  {
+    result.Warnings.push_back(sourceName + " -> " + targetName + ": refinement skipped: a map has " +
+      std::to_string(smallest) + " vertices, fewer than twice the basis size " +
+      std::to_string(options.BasisSize) + " (--basis-size); the result is the Moebius map");
     return true;
   }
   vtkNew<vtkCorrespondenceRefinement> refinement;

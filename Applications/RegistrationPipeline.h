@@ -20,6 +20,8 @@ struct PipelineOptions
   bool CenterBetweenSteps = true;
   bool FillHoles = false;
   bool KeepLargestComponent = false;
+  // false: a degenerate conformal map (DegenerateMap in its field data) is an error
+  bool AllowPoorMaps = false;
   // vtkMobiusCenter
   double CenteringTolerance = 1e-10;
   // vtkSO3Register

@@ -5,6 +5,7 @@
 #include "JsonSummary.h"
 #include "OutputFiles.h"
 #include "RegistrationPipeline.h"
+#include "VTKMessages.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -16,6 +17,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <new>
+#include <stdexcept>
+#include <vector>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -47,7 +51,16 @@ bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::
   reader->AddObserver(vtkCommand::ErrorEvent, catcher);
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
   reader->SetFileName(path.c_str());
-  reader->Update();
+  // The reader reports its own exceptions; this is for anything thrown around it.
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = path + ": not enough memory to read the mesh";
+    return false;
+  }
   if (!message.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
     // The reader's message starts with the file name already; drop VTK's class prefix.
@@ -86,9 +99,32 @@ double RotationAngleDegrees(vtkPolyData* aligned)
   const double c = (det * trace - 1) / 2;
   return std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / 3.14159265358979323846;
 }
+
+int Run(int argc, char* argv[]);
 }
 
 int main(int argc, char* argv[])
+{
+  // VTK's messages become ours: warnings (unless --quiet), or nothing when the program fails
+  // with its own one-line reason.
+  CaptureVTKMessages();
+  try
+  {
+    return Run(argc, argv);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Fail("out of memory");
+  }
+  catch (const std::exception& exception)
+  {
+    return Fail(std::string("unexpected error: ") + exception.what());
+  }
+}
+
+namespace
+{
+int Run(int argc, char* argv[])
 {
   CommandLine commandLine;
   std::string error;
@@ -142,6 +178,11 @@ int main(int argc, char* argv[])
   {
     return Fail(error);
   }
+  std::vector<std::string> warnings;
+  for (const auto& message : TakeVTKMessages())
+  {
+    warnings.push_back("VTK: " + message);
+  }
 
   const bool verbose = !commandLine.Quiet;
   PipelineResult result;
@@ -159,9 +200,14 @@ int main(int argc, char* argv[])
 
   const double demoError =
     commandLine.Demo ? DemoMeanError(result.Correspondence, target) : std::nan("");
+  for (const auto& message : TakeVTKMessages())
+  {
+    warnings.push_back("VTK: " + message);
+  }
+  warnings.insert(warnings.end(), result.Warnings.begin(), result.Warnings.end());
   if (verbose)
   {
-    for (const auto& warning : result.Warnings)
+    for (const auto& warning : warnings)
     {
       std::cerr << Program << ": warning: " << warning << "\n";
     }
@@ -193,4 +239,5 @@ int main(int argc, char* argv[])
               << (outputs.PicturePath.empty() ? "" : ", " + outputs.PicturePath) << ".\n";
   }
   return 0;
+}
 }

@@ -1,10 +1,12 @@
 #include "vtkMeshFileChecks.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <climits>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -356,6 +358,199 @@ std::string CheckPLYFile(const std::string& fileName)
     message << "face " << largestIndexFace << " refers to vertex " << largestIndex
             << ", but the file has " << std::max(0LL, numberOfVertices)
             << " vertices (numbered from 0)";
+    return message.str();
+  }
+  return {};
+}
+
+namespace
+{
+long long FileSize(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary | std::ios::ate);
+  return in ? static_cast<long long>(in.tellg()) : -1;
+}
+
+// A legacy FIELD block's array header, "name components tuples type".
+bool IsFieldArrayHeader(const std::string& line, long long& components, long long& tuples)
+{
+  static const char* const types[] = { "bit", "char", "signed_char", "unsigned_char", "short",
+    "unsigned_short", "int", "unsigned_int", "long", "unsigned_long", "vtktypeint64",
+    "vtktypeuint64", "float", "double", "string", "utf8_string", "vtkIdType" };
+  std::istringstream fields(line);
+  std::string name, type, rest;
+  if (!(fields >> name >> components >> tuples >> type) || (fields >> rest))
+  {
+    return false;
+  }
+  char* end = nullptr;
+  std::strtod(name.c_str(), &end);
+  return *end != '\0' && std::find(std::begin(types), std::end(types), type) != std::end(types);
+}
+
+std::string TooLarge(const std::string& what, long long claimed, long long values, long long size)
+{
+  std::ostringstream message;
+  message << "the header claims " << claimed << " " << what << " (" << values
+          << " values), more than a file of " << size << " bytes can hold";
+  return message.str();
+}
+}
+
+std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
+{
+  const long long size = FileSize(fileName);
+  if (size < 0)
+  {
+    return "cannot read the file";
+  }
+  std::ifstream in(fileName, std::ios::binary);
+  if (!xml)
+  {
+    // Every value takes at least one byte (a binary char; two in ASCII). Binary sections
+    // may hold newlines too: a line that does not parse as a section header is skipped.
+    std::string line;
+    while (std::getline(in, line))
+    {
+      std::istringstream fields(line);
+      std::string keyword;
+      fields >> keyword;
+      long long first = -1, second = -1;
+      if (keyword == "POINTS")
+      {
+        if ((fields >> first) && (first < 0 || first > size / 3))
+        {
+          return TooLarge("points", first, first < 0 || first > LLONG_MAX / 3 ? first : 3 * first, size);
+        }
+      }
+      else if (keyword == "POLYGONS" || keyword == "VERTICES" || keyword == "LINES" ||
+        keyword == "TRIANGLE_STRIPS")
+      {
+        if ((fields >> first >> second) && (first < 0 || second < 0 || first > size || second > size))
+        {
+          std::string cells = keyword;
+          std::transform(cells.begin(), cells.end(), cells.begin(),
+            [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+          return TooLarge(cells, first, std::max(first, second), size);
+        }
+      }
+      else if (IsFieldArrayHeader(line, first, second))
+      {
+        // "name components tuples type" in a FIELD block: components x tuples values.
+        if (first < 0 || second < 0 || (first > 0 && second > size / first))
+        {
+          std::ostringstream message;
+          message << "the field array line '" << line << "' claims " << first << " x " << second
+                  << " values, more than a file of " << size << " bytes can hold";
+          return message.str();
+        }
+      }
+      else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
+      {
+        if ((fields >> first) && (first < 0 || first > size))
+        {
+          return TooLarge(keyword == "POINT_DATA" ? "point data tuples" : "cell data tuples",
+            first, first, size);
+        }
+      }
+    }
+    return {};
+  }
+  // XML: the Piece attributes come before the data; read the start of the file only.
+  std::string head(static_cast<size_t>(std::min<long long>(size, 1 << 20)), '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
+  // zlib, the best of VTK's compressors, shrinks data at most about 1000-fold.
+  const long long ratio = head.find("compressor=") != std::string::npos ? 1100 : 1;
+  const struct
+  {
+    const char* Attribute;
+    const char* What;
+    long long ValuesPerItem;
+  } counts[] = { { "NumberOfPoints=\"", "points", 3 }, { "NumberOfVerts=\"", "vertex cells", 1 },
+    { "NumberOfLines=\"", "line cells", 1 }, { "NumberOfStrips=\"", "strips", 1 },
+    { "NumberOfPolys=\"", "polygons", 1 } };
+  long long largestCount = 1;
+  for (const auto& count : counts)
+  {
+    for (auto at = head.find(count.Attribute); at != std::string::npos;
+         at = head.find(count.Attribute, at + 1))
+    {
+      const char* start = head.c_str() + at + std::strlen(count.Attribute);
+      char* end = nullptr;
+      errno = 0;
+      const long long claimed = std::strtoll(start, &end, 10);
+      if (end == start)
+      {
+        continue;
+      }
+      if (claimed < 0 || errno == ERANGE || claimed > size * ratio / count.ValuesPerItem)
+      {
+        const long long values = claimed > LLONG_MAX / count.ValuesPerItem
+          ? claimed
+          : claimed * count.ValuesPerItem;
+        return TooLarge(count.What, claimed, values, size);
+      }
+      largestCount = std::max(largestCount, claimed);
+    }
+  }
+  // A data array holds components x tuples values, the tuples being points, cells or (for
+  // field data) NumberOfTuples.
+  for (const char* attribute : { "NumberOfComponents=\"", "NumberOfTuples=\"" })
+  {
+    const bool components = attribute[8] == 'C';
+    for (auto at = head.find(attribute); at != std::string::npos; at = head.find(attribute, at + 1))
+    {
+      const char* start = head.c_str() + at + std::strlen(attribute);
+      char* end = nullptr;
+      errno = 0;
+      const long long claimed = std::strtoll(start, &end, 10);
+      if (end == start)
+      {
+        continue;
+      }
+      const long long limit = size * ratio / (components ? largestCount : 1);
+      if (claimed < 0 || errno == ERANGE || claimed > limit)
+      {
+        std::ostringstream message;
+        message << "a data array claims " << claimed
+                << (components ? " components per tuple" : " tuples") << ", more than a file of "
+                << size << " bytes can hold";
+        return message.str();
+      }
+    }
+  }
+  return {};
+}
+
+std::string CheckSTLFile(const std::string& fileName)
+{
+  const long long size = FileSize(fileName);
+  std::ifstream in(fileName, std::ios::binary);
+  std::string head(static_cast<size_t>(std::max(0LL, std::min<long long>(size, 256))), '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  const bool text = std::all_of(head.begin(), head.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return (u >= 32 && u < 127) || c == '\n' || c == '\r' || c == '\t';
+  });
+  if (head.compare(0, 5, "solid") == 0 && text)
+  {
+    return {};
+  }
+  if (size < 84)
+  {
+    return "a binary STL file needs an 84-byte header; this one has " + std::to_string(size) +
+      " bytes";
+  }
+  const auto byte = [&head](int k) { return static_cast<unsigned char>(head[k]); };
+  const long long claimed = static_cast<long long>(byte(80)) | (static_cast<long long>(byte(81)) << 8) |
+    (static_cast<long long>(byte(82)) << 16) | (static_cast<long long>(byte(83)) << 24);
+  const long long room = (size - 84) / 50;
+  if (claimed > room)
+  {
+    std::ostringstream message;
+    message << "the header claims " << claimed << " triangles, but a file of " << size
+            << " bytes holds at most " << room;
     return message.str();
   }
   return {};

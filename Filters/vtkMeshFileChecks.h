@@ -22,6 +22,19 @@ namespace vtk
 /// and a face (list `vertex_indices` or `vertex_index`) with fewer than 3 vertices or an
 /// index outside [0, number of vertices).
 std::string CheckPLYFile(const std::string& fileName);
+
+/// Fails when the counts in a legacy .vtk file's section headers (POINTS, POLYGONS,
+/// VERTICES, LINES, TRIANGLE_STRIPS, POINT_DATA, CELL_DATA) or a .vtp file's Piece
+/// attributes (NumberOfPoints, NumberOfPolys, ...) claim more values than a file of its
+/// size can hold. VTK's readers allocate what the header claims before reading: a file of
+/// a few bytes claiming 2e9 points would otherwise make them ask for tens of gigabytes
+/// (and, when that fails, write through a null array).
+std::string CheckVTKFileSizes(const std::string& fileName, bool xml);
+
+/// Fails when a binary STL file's triangle count claims more 50-byte triangles than the file
+/// holds: VTK's STL reader allocates the claim (2e9 triangles end the program in
+/// vtkCellArray::AllocateExact). ASCII STL files (text from "solid" on) pass.
+std::string CheckSTLFile(const std::string& fileName);
 }
 }
 

@@ -12,9 +12,22 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <unistd.h>
 
 vtkStandardNewMacro(vtkSO3Register);
+
+namespace
+{
+// Bytes of RAM, 0 if unknown.
+double PhysicalMemory()
+{
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize) : 0;
+}
+}
 
 namespace
 {
@@ -61,6 +74,29 @@ int vtkSO3Register::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+double vtkSO3Register::EstimateMemory(int resolution)
+{
+  const double n = resolution;
+  return 160.0 * n * n + 50e6;
+}
+
+//------------------------------------------------------------------------------
+int vtkSO3Register::LargestResolution(double bytes)
+{
+  if (bytes <= 0)
+  {
+    bytes = PhysicalMemory();
+  }
+  if (bytes <= 50e6)
+  {
+    return 4;
+  }
+  const double n = std::sqrt((bytes - 50e6) / 160.0);
+  const int even = 2 * static_cast<int>(std::min(n, 1e9) / 2);
+  return std::max(4, even);
+}
+
+//------------------------------------------------------------------------------
 int vtkSO3Register::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -91,6 +127,15 @@ int vtkSO3Register::ComputeOutput(
   if (this->Resolution < 4 || this->Resolution % 2 != 0)
   {
     vtkErrorMacro(<< "Resolution must be even and at least 4 (it is " << this->Resolution << ").");
+    return 0;
+  }
+  const double memory = PhysicalMemory();
+  if (memory > 0 && EstimateMemory(this->Resolution) > memory)
+  {
+    vtkErrorMacro(<< "Resolution " << this->Resolution << " needs about "
+                  << EstimateMemory(this->Resolution) / 1e9 << " GB, more than this machine's "
+                  << memory / 1e9 << " GB; Resolution " << LargestResolution(memory)
+                  << " would fit.");
     return 0;
   }
 

@@ -28,8 +28,8 @@
  * - `Resolution`, `CorrelationBandwidth` (the bands used by the grid search).
  *
  * Errors: an input that is not a spherical map (or has a triangle referring to a point id
- * out of range), missing or invalid `SurfaceArea`, Resolution odd or below 4, running out
- * of memory (a Resolution too large for the machine).
+ * out of range), missing or invalid `SurfaceArea`, Resolution odd or below 4, a Resolution
+ * whose estimated memory (EstimateMemory) exceeds the machine's, running out of memory.
  *
  * @sa vtkSphericalScaleGrid vtkDenseCorrespondence
  */
@@ -70,6 +70,22 @@ public:
   vtkSetMacro(Resolution, int);
   vtkGetMacro(Resolution, int);
   ///@}
+
+  /**
+   * Estimated peak memory in bytes of a registration at `resolution`: the two meshes'
+   * scale-factor grids, their transforms and the correlation grow as N^2 (measured on
+   * CGAL's bunny: about 70 bytes per grid cell, 384 MB in all at N = 2048); the estimate,
+   * 160 bytes per cell and 50 MB, errs on the safe side. RequestData refuses a Resolution
+   * whose estimate exceeds the machine's physical memory, instead of failing part way
+   * through the allocations.
+   */
+  static double EstimateMemory(int resolution);
+
+  /**
+   * The largest even Resolution whose EstimateMemory fits in `bytes` (by default, 0, the
+   * machine's physical memory).
+   */
+  static int LargestResolution(double bytes = 0);
 
   ///@{
   /**

@@ -16,12 +16,16 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkMath.h"
 #include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
 
 #include <Eigen/Geometry>
 
 #include <sstream>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkSphericalConformalMap);
 
@@ -319,16 +323,63 @@ int vtkSphericalConformalMap::ComputeOutput(
     }
     return 0;
   }
+  // The reasons the map is degenerate, if it is: the output is still produced (a caller may
+  // want to look at it), but the field data says it carries no trustworthy correspondence.
+  std::vector<std::string> problems;
   if (!result.Converged)
   {
-    vtkWarningMacro(<< "The flow stopped after " << result.Iterations
-                    << " steps with relative change " << result.RelativeChange
-                    << " above the tolerance " << this->ConvergenceTolerance << ".");
+    std::ostringstream problem;
+    problem << "the flow stopped after " << result.Iterations << " steps with relative change "
+            << result.RelativeChange << " above the tolerance " << this->ConvergenceTolerance;
+    problems.push_back(problem.str());
   }
   if (result.Distortion.FlippedTriangles > 0)
   {
-    vtkWarningMacro(<< result.Distortion.FlippedTriangles
-                    << " triangles are flipped on the sphere.");
+    std::ostringstream problem;
+    problem << result.Distortion.FlippedTriangles
+            << " triangles are flipped on the sphere after the repair";
+    problems.push_back(problem.str());
+  }
+  // Spread over the sphere, even a tetrahedron's triangles span 37% of its area; a map
+  // whose vertices crowd into one spot spans almost none.
+  double sphereArea = 0;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::Vector3d a = result.SpherePoints.row(triangles(t, 0)),
+                          b = result.SpherePoints.row(triangles(t, 1)),
+                          c = result.SpherePoints.row(triangles(t, 2));
+    sphereArea += 0.5 * (b - a).cross(c - a).norm();
+  }
+  const double coveredShare = sphereArea / (4 * vtkMath::Pi());
+  if (!(coveredShare >= 0.1))
+  {
+    std::ostringstream problem;
+    problem << "the map collapsed: its triangles span " << 100 * coveredShare
+            << "% of the sphere";
+    problems.push_back(problem.str());
+  }
+  // Area-weighted, real meshes stay below 2 (CGAL's bull, with triangles of 1e-3 degrees,
+  // 1.75); above 10 the triangles are squashed flat on average: a closed pentagonal prism
+  // reaches 5,000, and the correspondence read off such a map means nothing.
+  if (!(result.Distortion.MeanQuasiConformal <= 10))
+  {
+    std::ostringstream problem;
+    problem << "its triangles are squashed: mean quasi-conformal distortion "
+            << result.Distortion.MeanQuasiConformal << " (1 is conformal, real meshes stay below 2)";
+    problems.push_back(problem.str());
+  }
+  if (!result.Refinement.Success)
+  {
+    problems.push_back("the refinement of squeezed regions failed, which keep the flow's positions");
+  }
+  std::string degenerateReason;
+  for (const auto& problem : problems)
+  {
+    degenerateReason += (degenerateReason.empty() ? "" : "; ") + problem;
+  }
+  if (!degenerateReason.empty())
+  {
+    vtkWarningMacro(<< "The map is degenerate: " << degenerateReason << ".");
   }
 
   // Assemble the spherical map.
@@ -389,6 +440,12 @@ int vtkSphericalConformalMap::ComputeOutput(
   SetFieldValue(fieldData, "ReversedTriangleOrientation", reversed ? 1 : 0);
   SetFieldValue(
     fieldData, "FlipRepairMovedVertices", static_cast<double>(result.FlipRepair.MovedVertices));
+  SetFieldValue(fieldData, "SqueezedRegionRefinementFailed", result.Refinement.Success ? 0 : 1);
+  SetFieldValue(fieldData, "DegenerateMap", degenerateReason.empty() ? 0 : 1);
+  vtkNew<vtkStringArray> reason;
+  reason->SetName("DegenerateMapReason");
+  reason->InsertNextValue(degenerateReason);
+  fieldData->AddArray(reason);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -39,7 +39,15 @@
  *   spherical chord triangle; 1 is conformal), `MaxQuasiConformalDistortion`,
  *   `AreaDistortionRange` (2 doubles: min and max of spherical share / surface share of
  *   area per triangle), `IntrinsicDelaunayUsed` (0/1), `IntrinsicDelaunayFlips`, `MergedDuplicatePoints`, `FilledHoles`,
- *   `ReversedTriangleOrientation` (0/1), `FlipRepairMovedVertices`.
+ *   `ReversedTriangleOrientation` (0/1), `FlipRepairMovedVertices`,
+ *   `SqueezedRegionRefinementFailed` (0/1), `DegenerateMap` (0/1) and
+ *   `DegenerateMapReason` (a string, empty for a good map).
+ *
+ * A map is degenerate (output anyway, with a warning; the caller decides) when triangles
+ * are still flipped after the repair, when its triangles collapsed to a small part of the
+ * sphere or are squashed (area-weighted mean quasi-conformal distortion above 10; real
+ * meshes stay below 2), when the flow did not converge, or when the refinement of squeezed regions
+ * failed. Such a map carries no trustworthy correspondence.
  *
  * @sa vtkMobiusCenter
  */

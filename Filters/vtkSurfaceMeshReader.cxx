@@ -26,6 +26,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <vector>
 
 vtkStandardNewMacro(vtkSurfaceMeshReader);
@@ -97,6 +98,20 @@ std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
   {
     return "invalid vertex or face count";
   }
+  // The counts are allocated before the lines are read: they must be plausible for the
+  // file's size, or a header of a few bytes could ask for gigabytes. A vertex line takes at
+  // least 6 bytes ("0 0 0\n") and a face line 7 ("3 0 1 2"); the bound is looser, so that a
+  // file merely cut short gets the more precise message of the line that is missing.
+  const long long size =
+    static_cast<long long>(std::ifstream(fileName, std::ios::binary | std::ios::ate).tellg());
+  if (numberOfVertices > size / 4 || numberOfFaces > size / 4 ||
+    numberOfVertices + numberOfFaces > size / 4)
+  {
+    std::ostringstream error;
+    error << "the header claims " << numberOfVertices << " vertices and " << numberOfFaces
+          << " faces, more than a file of " << size << " bytes can hold";
+    return error.str();
+  }
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -122,6 +137,15 @@ std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
     {
       face.str(line);
       face >> n;
+    }
+    // Each index takes at least two characters of the line: a count larger than that is
+    // not allocated (one line "2000000000 0 1 2" would ask for 16 GB).
+    if (n > static_cast<long long>(line.size()) / 2)
+    {
+      std::ostringstream error;
+      error << "face " << f << " of " << numberOfFaces << " claims " << n
+            << " vertices, but its line lists fewer";
+      return error.str();
     }
     ids.resize(static_cast<size_t>(std::max(0LL, n)));
     bool ok = n >= 3;
@@ -301,9 +325,20 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
   {
     output->ShallowCopy(result);
   }
-  // VTK's messages carry file and line prefixes; keep the last line, the reason.
+  // VTK's messages carry file, line and object prefixes ("vtkXMLPolyDataReader (0x...): ");
+  // keep the reason.
   const auto lastBreak = error.find_last_of('\n', error.find_last_not_of("\n "));
-  return lastBreak == std::string::npos ? error : error.substr(lastBreak + 1);
+  std::string reason = lastBreak == std::string::npos ? error : error.substr(lastBreak + 1);
+  const auto object = reason.find("): ");
+  if (reason.compare(0, 3, "vtk") == 0 && object != std::string::npos)
+  {
+    reason = reason.substr(object + 3);
+  }
+  while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
+  {
+    reason.pop_back();
+  }
+  return reason;
 }
 }
 
@@ -354,9 +389,23 @@ int vtkSurfaceMeshReader::ComputeOutput(
     vtkErrorMacro(<< "No file name given.");
     return 0;
   }
-  if (!std::ifstream(fileName))
+  struct stat information;
+  if (stat(fileName.c_str(), &information) != 0 || !std::ifstream(fileName))
   {
     vtkErrorMacro(<< fileName << ": cannot open the file for reading.");
+    return 0;
+  }
+  // A directory opens as an empty stream, and a device such as /dev/zero never ends: the
+  // parsers below would report nonsense or read forever.
+  if (S_ISDIR(information.st_mode))
+  {
+    vtkErrorMacro(<< fileName << ": is a directory, not a mesh file.");
+    return 0;
+  }
+  if (!S_ISREG(information.st_mode))
+  {
+    vtkErrorMacro(<< fileName << ": is not a regular file (a device, pipe or socket); "
+                  << "save the mesh to a file first.");
     return 0;
   }
   const std::string extension = LowerCaseExtension(fileName);
@@ -384,18 +433,21 @@ int vtkSurfaceMeshReader::ComputeOutput(
     }
     else if (extension == "stl")
     {
+      error = mobius::vtk::CheckSTLFile(fileName);
       auto stl = vtkSmartPointer<vtkSTLReader>::New();
       stl->SetFileName(fileName.c_str());
       reader = stl;
     }
     else if (extension == "vtp")
     {
+      error = mobius::vtk::CheckVTKFileSizes(fileName, true);
       auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
       vtp->SetFileName(fileName.c_str());
       reader = vtp;
     }
     else if (extension == "vtk")
     {
+      error = mobius::vtk::CheckVTKFileSizes(fileName, false);
       auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
       legacy->SetFileName(fileName.c_str());
       reader = legacy;

@@ -24,6 +24,8 @@ parser.add_argument("--plugin", required=True, help="path of MobiusRegistration.
 parser.add_argument("--template", required=True, help="the mesh every other one is registered to")
 parser.add_argument("--output", default="batch_output", help="folder for the results")
 parser.add_argument("--resolution", type=int, default=256, help="SO3 Register resolution")
+parser.add_argument("--max-failures", type=int, default=0,
+                    help="exit with status 1 when more meshes than this fail (default 0)")
 parser.add_argument("meshes", nargs="+")
 args = parser.parse_args()
 
@@ -67,6 +69,14 @@ def centered_map(path, errors):
     center.SetInputConnection(conformal.GetOutputPort())
     center.Update()
     result = vtkPolyData()
+    if conformal.GetOutput().GetNumberOfPoints() > 0:
+        # A degenerate map (flips left, squashed triangles, no convergence) would give a
+        # meaningless correspondence: count it as a failure, with the filter's reason.
+        field = conformal.GetOutput().GetFieldData()
+        if field.GetArray("DegenerateMap") and field.GetArray("DegenerateMap").GetValue(0) == 1:
+            reason = field.GetAbstractArray("DegenerateMapReason")
+            errors.messages.append("degenerate conformal map: " + (reason.GetValue(0) if reason else "?"))
+            return result
     result.DeepCopy(center.GetOutput())
     return result
 
@@ -117,3 +127,8 @@ if rank == 0:
     done = sum(1 for rank_rows in all_rows for row in rank_rows if row[1] == "ok")
     print(f"registered {done} of {len(args.meshes)} meshes to {args.template} on {size} ranks; "
           f"see {os.path.join(args.output, 'summary.csv')}")
+failed = comm.bcast(len(args.meshes) - done if rank == 0 else None, root=0)
+if failed > args.max_failures:
+    if rank == 0:
+        print(f"{failed} meshes failed, more than --max-failures {args.max_failures}", file=sys.stderr)
+    sys.exit(1)

@@ -10,6 +10,7 @@ log area distortion before (left) and after (right) centering.
 """
 import argparse
 import os
+import sys
 
 from paraview.simple import (  # pvpython's usual namespace
     CellSize, ColorBy, CreateView, GetActiveViewOrCreate, GetDisplayProperties, LoadPlugin,
@@ -61,6 +62,8 @@ print("|mu| before: %.3g, after: %.3g, inversions: %d" % (
     result.GetArray("InitialCenterOfMassNorm").GetValue(0),
     result.GetArray("CenterOfMassNorm").GetValue(0),
     int(result.GetArray("CenteringIterations").GetValue(0))))
+if not result.GetArray("CenterOfMassNorm").GetValue(0) <= 1e-6:
+    sys.exit("error: the map is not centered")
 # Inline binary data: with Debian bookworm's expat, VTK 9.2 cannot read back many files
 # written with the default appended data.
 SaveData(os.path.join(args.output, "centered.vtp"), proxy=centered, DataMode="Binary")

@@ -2,10 +2,11 @@
 
 Usage:
     pvpython register_and_transfer.py --plugin PATH/MobiusRegistration.so \
-        --source MESH [--target MESH] [--output DIR]
+        --source MESH [--target MESH] [--output DIR] [--max-error PERCENT]
 
 Without --target, the target is a bent, rotated copy of the source made here, and the
-script also reports how far each source vertex lands from its true counterpart.
+script also reports how far each source vertex lands from its true counterpart (and, with
+--max-error, exits with status 1 when the mean is above that many percent).
 The target gets a point array "Height" (its vertical coordinate before the rotation, or
 its z coordinate for a given target); the Dense Correspondence filter brings it to the
 source's vertices. Writes DIR/correspondence.vtp and DIR/correspondence.png.
@@ -13,6 +14,7 @@ source's vertices. Writes DIR/correspondence.vtp and DIR/correspondence.png.
 import argparse
 import math
 import os
+import sys
 
 from paraview.simple import (  # pvpython's usual namespace
     AssignViewToLayout, ColorBy, CreateLayout, CreateView, LoadPlugin, OpenDataFile,
@@ -25,6 +27,9 @@ parser.add_argument("--source", required=True, help="source mesh (.off .obj .ply
 parser.add_argument("--target", help="target mesh (default: a deformed copy of the source)")
 parser.add_argument("--output", default="register_output", help="folder for the results")
 parser.add_argument("--resolution", type=int, default=128, help="SO3 Register resolution")
+parser.add_argument("--max-error", type=float,
+                    help="without --target: fail unless the mean distance to the true counterpart is "
+                         "below this percentage of the bounding-box diagonal")
 args = parser.parse_args()
 os.makedirs(args.output, exist_ok=True)
 LoadPlugin(args.plugin, remote=False, ns=globals())
@@ -80,8 +85,11 @@ if not args.target:
               for k in range(result.GetNumberOfPoints()) if source_ids.GetTuple1(k) >= 0]
     bounds = truth.GetBounds()
     diagonal = math.dist(bounds[0::2], bounds[1::2])
-    print("mean distance to the true counterpart: %.2f%% of the target's bounding-box diagonal"
-          % (100 * sum(errors) / len(errors) / diagonal))
+    mean_error = 100 * sum(errors) / len(errors) / diagonal if errors else math.inf
+    print("mean distance to the true counterpart: %.2f%% of the target's bounding-box diagonal" % mean_error)
+    if args.max_error is not None and not mean_error < args.max_error:
+        print("error: the mean distance is above --max-error %g%%" % args.max_error, file=sys.stderr)
+        sys.exit(1)
 # Inline binary: bookworm's expat cannot read VTK 9.2's appended data back.
 SaveData(os.path.join(args.output, "correspondence.vtp"), proxy=correspondence, DataMode="Binary")
 

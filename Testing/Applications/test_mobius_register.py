@@ -3,8 +3,11 @@
 and vertex numbers in the CSV that follow the input files."""
 import itertools
 import json
+import math
 import os
+import resource
 import shutil
+import struct
 import subprocess
 import sys
 
@@ -14,8 +17,17 @@ os.makedirs(work)
 failures = []
 
 
-def run(*arguments, env=None, cwd=work):
-    result = subprocess.run([program, *arguments], cwd=cwd, env=env, capture_output=True, text=True)
+def run(*arguments, env=None, cwd=work, timeout=600, memory=None):
+    """Exit code, standard output and error; a run that hangs is killed and counts as code None.
+    `memory`: a limit on the program's address space, in bytes."""
+    def limit():
+        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+    try:
+        result = subprocess.run([program, *arguments], cwd=cwd, env=env, capture_output=True,
+                                text=True, errors="replace", timeout=timeout,
+                                preexec_fn=limit if memory else None)
+    except subprocess.TimeoutExpired:
+        return None, "", f"timed out after {timeout} s"
     return result.returncode, result.stdout, result.stderr
 
 
@@ -76,11 +88,14 @@ if code == 0:
           "hand outputs")
 
 
-def expect_failure(arguments, words, outputs, env=None, code_expected=1):
-    code, _, err = run(*arguments, env=env)
+def expect_failure(arguments, words, outputs, env=None, code_expected=1, timeout=600):
+    code, _, err = run(*arguments, env=env, timeout=timeout)
     lines = err.strip().splitlines()
     check(code == code_expected, f"{arguments}: exit code {code}, expected {code_expected}")
     check(len(lines) == 1 and all(w in err for w in words), f"{arguments}: message {err!r} lacks {words}")
+    # The program's own line, never VTK's log format (colours, timestamps, file and line).
+    check("\x1b" not in err and "ERROR: In" not in err and "(0x" not in err,
+          f"{arguments}: VTK's log format in {err!r}")
     for output in outputs:
         leftovers = [f for f in os.listdir(work) if f.startswith(output)]
         check(not leftovers, f"{arguments}: left {leftovers}")
@@ -125,6 +140,188 @@ for number, (name, (text, words)) in enumerate(sorted(hostile.items())):
         f.write(text)
     for arguments in ([name, hand], [hand, name]):
         expect_failure([*arguments, "-o", f"hostile{number}"], [name, *words], [f"hostile{number}"])
+
+
+# Hostile sizes: headers claiming more than the file holds, truncated files. Each must fail
+# quickly with one line (VTK's readers would allocate what the header claims, crash on the
+# truncated data, or print a warning per missing vertex).
+def binary_ply(vertex_count, vertices, faces, byte_order="<"):
+    header = ("ply\nformat binary_%s_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+              "property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+              % ("little" if byte_order == "<" else "big", vertex_count, len(faces)))
+    data = b"".join(struct.pack(byte_order + "3f", *v) for v in vertices)
+    data += b"".join(struct.pack(byte_order + "B3i", 3, *f) for f in faces)
+    return header.encode() + data
+
+
+tetra_points = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+tetra_faces = [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+whole = binary_ply(4, tetra_points, tetra_faces)
+sized = {
+    "cut-binary.ply": (whole[:len(whole) - 20], ["face 2", "is missing"]),
+    "cut-big-endian.ply": (binary_ply(4, tetra_points, tetra_faces, ">")[:-70], ["vertex 2", "is missing"]),
+    "cut-ascii.ply": (ply_header.encode()[:-12], ["the file ends before vertex 2"]),
+    "billion.ply": (ply_header.replace("element vertex 4", "element vertex 1000000000").encode(),
+                    ["the file ends before vertex 4 of 1000000000"]),
+    "billion-binary.ply": (binary_ply(1000000000, tetra_points, tetra_faces), ["vertex 8", "is missing"]),
+    "huge.off": (b"OFF\n2000000000 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n",
+                 ["claims 2000000000 vertices"]),
+    "huge-face.off": (b"OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n2000000000 0 1 2\n3 0 1 3\n3 1 2 3\n3 0 3 2\n",
+                      ["face 0 of 4 claims 2000000000 vertices"]),
+    "huge.vtk": (b"# vtk DataFile Version 3.0\nhostile\nASCII\nDATASET POLYDATA\nPOINTS 2000000000 float\n"
+                 b"0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 16\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n",
+                 ["claims 2000000000 points"]),
+    "huge-cells.vtk": (b"# vtk DataFile Version 3.0\nhostile\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+                       b"0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 2000000000\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n",
+                       ["polygons"]),
+    "huge.vtp": (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1" byte_order="LittleEndian">\n'
+                 b'<PolyData><Piece NumberOfPoints="2000000000" NumberOfPolys="4">\n'
+                 b'<Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">0 0 0 1 0 0 0 1 0 0 0 1'
+                 b'</DataArray></Points>\n</Piece></PolyData></VTKFile>\n', ["claims 2000000000 points"]),
+    "huge.stl": (b"x" * 80 + struct.pack("<I", 2000000000) + b"".join(
+        struct.pack("<12fH", 0, 0, 0, *tetra_points[a], *tetra_points[b], *tetra_points[c], 0)
+        for a, b, c in tetra_faces), ["claims 2000000000 triangles"]),
+    # Broken XML: the parser inside VTK's reader reports it to nobody; it must not reach the
+    # terminal in VTK's log format, next to the program's own line.
+    "broken.vtp": (b'<?xml version="1.0"?>\n<VTKFile type="PolyData" version="0.1">\n<PolyData><Piece Number',
+                   ["broken.vtp"]),
+}
+for number, (name, (data, words)) in enumerate(sorted(sized.items())):
+    with open(os.path.join(work, name), "wb") as f:
+        f.write(data)
+    expect_failure([name, hand, "-o", f"sized{number}"], [name, *words], [f"sized{number}"], timeout=120)
+    expect_failure([name, hand, "-o", f"sized{number}", "--quiet"], [name, *words], [f"sized{number}"],
+                   timeout=120)
+
+# VTK's own messages (here a warning of the legacy reader, which nobody observes) become the
+# program's one-line warnings, each once, and --quiet silences them.
+with open(os.path.join(work, "newer.vtk"), "w") as f:
+    f.write("# vtk DataFile Version 5.2\nt\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n"
+            "POLYGONS 5 12\nOFFSETS vtktypeint64\n0 3 6 9 12\nCONNECTIVITY vtktypeint64\n0 2 1 0 1 3 1 2 3 0 3 2\n")
+code, _, err = run("newer.vtk", "newer.vtk", "-o", "newer", "--resolution", "16")
+warned = [line for line in err.splitlines() if "Reading file version" in line]
+check(code == 0 and len(warned) == 1 and warned[0].startswith("mobius-register: warning: VTK: Reading file version")
+      and "\x1b" not in err and "Warning: In" not in err, f"VTK's warning as the program's: {code} {err!r}")
+code, _, err = run("newer.vtk", "newer.vtk", "-o", "newer", "--resolution", "16", "--quiet", "--force")
+check(code == 0 and err == "", f"--quiet silences VTK's warning: {code} {err!r}")
+
+# Not a regular file: a directory says so; a device that never ends must not hang the reader.
+os.makedirs(os.path.join(work, "folder.off"), exist_ok=True)
+expect_failure(["folder.off", hand, "-o", "notfile1"], ["folder.off", "is a directory"], ["notfile1"])
+os.symlink("/dev/zero", os.path.join(work, "zero.off"))
+os.symlink("/dev/zero", os.path.join(work, "zero.ply"))
+expect_failure(["zero.off", hand, "-o", "notfile2"], ["zero.off", "not a regular file"], ["notfile2"], timeout=60)
+expect_failure([hand, "zero.ply", "-o", "notfile3"], ["zero.ply", "not a regular file"], ["notfile3"], timeout=60)
+expect_failure(["/dev/zero", hand, "-o", "notfile4"], ["/dev/zero"], ["notfile4"], timeout=60)
+
+# Option values: NaN, infinities and absurd sizes are usage errors naming the option.
+for option, value in (("--smoothing", "nan"), ("--smoothing", "inf"), ("--smoothing", "1e308"),
+                      ("--tolerance", "nan"), ("--tolerance", "-inf"), ("--resolution", "100000")):
+    expect_failure([hand, hand, "-o", "option", option, value], [option], ["option"], code_expected=2,
+                   timeout=60)
+code, _, err = run(hand, hand, "-o", "option", "--resolution", "100000")
+check("fits" in err, f"--resolution 100000 says what would fit: {err!r}")
+# Running out of memory part way (here a 700 MB address space for --resolution 4096, which the
+# machine's memory would allow; it needs about 1.2 GB) is an error of the stage, exit status 1,
+# not "terminate called". (--resolution 64 runs in 500 MB.)
+code, _, err = run(hand, hand, "-o", "starved", "--resolution", "4096", "--quiet", memory=700 * 2 ** 20)
+check(code == 1 and len(err.strip().splitlines()) == 1 and "out of memory" in err and "--resolution" in err
+      and "terminate" not in err, f"out of memory: {code} {err!r}")
+check(not [f for f in os.listdir(work) if f.startswith("starved")], "out of memory: no output")
+# The help files an existing output under status 1, as the program does.
+code, out, _ = run("--help")
+check("existing file without --force" in " ".join(out.split("Exit status:")[-1].split("2 for")[0].split()),
+      "--help: exit status 1 covers existing outputs")
+
+# Hints name the command-line options, not the filters' properties.
+open_mesh = "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n"
+with open(os.path.join(work, "open.off"), "w") as f:
+    f.write(open_mesh)
+expect_failure(["open.off", hand, "-o", "hint"], ["open.off", "--fill-holes"], ["hint"])
+code, _, err = run("open.off", hand, "-o", "hint")
+check("FillHoles" not in err, f"hint names a VTK property: {err!r}")
+
+# A failed rename leaves nothing behind: OUT.csv is a folder, so moving the CSV into place
+# fails after OUT.vtp could have been moved; OUT.vtp must not stay.
+os.makedirs(os.path.join(work, "renamed.csv", "inside"))
+code, _, err = run(hand, hand, "-o", "renamed", "--resolution", "32", "--refine", "none", "--force")
+check(code == 1 and "renamed.csv" in err and len(err.strip().splitlines()) == 1,
+      f"failed rename: {code} {err!r}")
+check(not os.path.exists(os.path.join(work, "renamed.vtp")), "failed rename left renamed.vtp behind")
+check(not [f for f in os.listdir(work) if ".partial-" in f or ".previous-" in f], "temporary files left")
+# ...and an existing OUT.vtp replaced with --force comes back when the CSV cannot follow.
+with open(os.path.join(work, "renamed.vtp"), "w") as f:
+    f.write("old")
+code, _, err = run(hand, hand, "-o", "renamed", "--resolution", "32", "--refine", "none", "--force")
+with open(os.path.join(work, "renamed.vtp")) as f:
+    check(code == 1 and f.read() == "old", "failed rename restores the replaced OUT.vtp")
+
+
+# Degenerate maps fail (status 1, one line with the reason) unless --allow-poor-maps.
+def write_mesh(name, points, faces):
+    with open(os.path.join(work, name), "w") as f:
+        f.write(f"OFF\n{len(points)} {len(faces)} 0\n")
+        f.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in points)
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in faces)
+
+
+# A closed pentagonal prism: 10 vertices, caps fanned from a corner.
+prism_points = [(math.cos(2 * math.pi * k / 5), math.sin(2 * math.pi * k / 5), z) for z in (0, 1) for k in range(5)]
+prism_faces = [(0, 2, 1), (0, 3, 2), (0, 4, 3), (5, 6, 7), (5, 7, 8), (5, 8, 9)]
+for k in range(5):
+    a, b = k, (k + 1) % 5
+    prism_faces += [(a, b, b + 5), (a, b + 5, a + 5)]
+write_mesh("prism.off", prism_points, prism_faces)
+
+
+# A 1:1:1000 needle ellipsoid (a UV sphere stretched along z).
+def uv_ellipsoid(rings, segments, scale):
+    points = [(0, 0, scale[2])]
+    for i in range(1, rings):
+        theta = math.pi * i / rings
+        points += [(scale[0] * math.sin(theta) * math.cos(2 * math.pi * j / segments),
+                    scale[1] * math.sin(theta) * math.sin(2 * math.pi * j / segments),
+                    scale[2] * math.cos(theta)) for j in range(segments)]
+    points.append((0, 0, -scale[2]))
+    south = len(points) - 1
+    faces = [(0, 1 + j, 1 + (j + 1) % segments) for j in range(segments)]
+    for i in range(rings - 2):
+        for j in range(segments):
+            a, b = 1 + i * segments + j, 1 + i * segments + (j + 1) % segments
+            faces += [(a, a + segments, b), (b, a + segments, b + segments)]
+    last = 1 + (rings - 2) * segments
+    faces += [(last + j, south, last + (j + 1) % segments) for j in range(segments)]
+    return points, faces
+
+
+write_mesh("needle.off", *uv_ellipsoid(40, 40, (1, 1, 1000)))
+for name in ("prism.off", "needle.off"):
+    expect_failure([name, hand, "-o", "poor"], [name, "degenerate", "--allow-poor-maps"], ["poor"])
+    code, out, err = run(name, hand, "-o", "allowed-" + name[:-4], "--allow-poor-maps", "--resolution", "64",
+                         "--json")
+    check(code == 0 and os.path.exists(os.path.join(work, f"allowed-{name[:-4]}.csv")),
+          f"{name} with --allow-poor-maps: {code} {err!r}")
+    if code == 0:
+        maps = json.loads(out)
+        check("squashed" in (maps["source_map"]["degenerate"] or "") and maps["target_map"]["degenerate"] is None,
+              f"{name}: the JSON summary names the degenerate map: {maps['source_map']}")
+
+# A tiny valid mesh (an icosahedron, 12 vertices, fewer than twice the refinement's basis):
+# the refinement is skipped with a warning, the Möbius map is the result.
+golden = (1 + 5 ** 0.5) / 2
+ico_points = [(-1, golden, 0), (1, golden, 0), (-1, -golden, 0), (1, -golden, 0), (0, -1, golden), (0, 1, golden),
+              (0, -1, -golden), (0, 1, -golden), (golden, 0, -1), (golden, 0, 1), (-golden, 0, -1), (-golden, 0, 1)]
+ico_faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11),
+             (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+write_mesh("icosahedron.off", ico_points, ico_faces)
+code, out, err = run("icosahedron.off", "icosahedron.off", "-o", "ico", "--resolution", "32", "--json")
+check(code == 0 and "refinement skipped" in err, f"icosahedron: {code} {err!r}")
+if code == 0:
+    summary = json.loads(out)
+    check(summary["refinement"] is None, "icosahedron: no refinement in the summary")
+    with open(os.path.join(work, "ico.csv")) as f:
+        check(len(f.readlines()) == 13, "icosahedron: 12 CSV rows")
 
 
 # Vertex numbering: the CSV names the vertices by their number in the files, whatever the

@@ -151,6 +151,10 @@ int TestBadInputs()
   int failures = 0;
   auto map = CenteredBumpyMap();
   failures += ExpectError(map, map, 31, "even and at least 4");
+  // Too large for any machine: refused before allocating, saying what would fit.
+  MOBIUS_EXPECT(vtkSO3Register::LargestResolution(1e9) < 4000);
+  MOBIUS_EXPECT(vtkSO3Register::EstimateMemory(vtkSO3Register::LargestResolution(1e9)) <= 1e9);
+  failures += ExpectError(map, map, 2000000000, "would fit");
   auto noArea = vtkSmartPointer<vtkPolyData>::New();
   noArea->DeepCopy(map);
   noArea->GetCellData()->RemoveArray("SurfaceArea");

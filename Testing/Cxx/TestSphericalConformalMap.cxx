@@ -2,6 +2,8 @@
 // a clear error for every kind of input it cannot map.
 #include "MobiusTestUtilities.h"
 #include "vtkSphericalConformalMap.h"
+#include "vtkStringArray.h"
+#include "vtkFieldData.h"
 
 #include "Torus.h"
 
@@ -121,6 +123,49 @@ int ExpectGoodMap(const Outcome& outcome, vtkIdType points, double maxMeanQC)
   }
   MOBIUS_EXPECT(out->GetPointData()->GetArray("SurfacePoints") != nullptr);
   MOBIUS_EXPECT(out->GetCellData()->GetArray("SurfaceArea") != nullptr);
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "DegenerateMap") == 0);
+  MOBIUS_EXPECT(mobius_test::FieldValue(out, "SqueezedRegionRefinementFailed") == 0);
+  return failures;
+}
+
+std::string DegenerateReason(vtkPolyData* map)
+{
+  auto reason =
+    vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
+  return reason && reason->GetNumberOfValues() == 1 ? reason->GetValue(0) : "(no reason array)";
+}
+
+// A map that cannot be trusted is output (a caller may want to see it) but says so in its
+// field data, with the reason, and warns.
+int ExpectDegenerateMap(const Outcome& outcome, const std::string& words)
+{
+  int failures = 0;
+  MOBIUS_EXPECT(outcome.Error.empty());
+  MOBIUS_EXPECT(outcome.Output->GetNumberOfPoints() > 0);
+  MOBIUS_EXPECT(mobius_test::FieldValue(outcome.Output, "DegenerateMap") == 1);
+  const std::string reason = DegenerateReason(outcome.Output);
+  if (reason.find(words) == std::string::npos ||
+    outcome.Warning.find("degenerate") == std::string::npos)
+  {
+    std::cerr << "expected a degenerate map because '" << words << "', got the reason '" << reason
+              << "' and the warning '" << outcome.Warning << "'\n";
+    ++failures;
+  }
+  return failures;
+}
+
+int TestDegenerateMaps()
+{
+  int failures = 0;
+  // Stopped before convergence.
+  failures += ExpectDegenerateMap(
+    Map(Ellipsoid(3, 1.0, 2.0, 0.5), [](vtkSphericalConformalMap* map) {
+      map->SetMaximumNumberOfIterations(1);
+      map->SetConvergenceTolerance(1e-12);
+    }),
+    "the flow stopped after 1 steps");
+  // A 1:1:1000 needle: the flow folds it, and the repair cannot undo every fold.
+  failures += ExpectDegenerateMap(Map(Ellipsoid(3, 1.0, 1.0, 1000.0)), "flipped on the sphere");
   return failures;
 }
 
@@ -284,5 +329,6 @@ int TestSphericalConformalMap(int, char*[])
   int failures = TestMaps();
   failures += TestBadInputs();
   failures += TestRealMesh();
+  failures += TestDegenerateMaps();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

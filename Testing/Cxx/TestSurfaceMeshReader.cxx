@@ -13,7 +13,10 @@
 #include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -155,6 +158,64 @@ int TestHostileFiles(const std::string& dir)
   return failures;
 }
 
+// Headers claiming more than the file holds: VTK's readers (and a naive OFF reader) would
+// allocate the claim before reading, gigabytes for a file of a few bytes.
+int TestHostileSizes(const std::string& dir)
+{
+  int failures = 0;
+  const std::string tetraOff = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  WriteText(dir + "/huge.off", "OFF\n2000000000 4 0\n" + tetraOff + "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  failures += ExpectError(dir + "/huge.off", "the header claims 2000000000 vertices");
+  WriteText(dir + "/huge-faces.off", "OFF\n4 2000000000 0\n" + tetraOff + "3 0 2 1\n");
+  failures += ExpectError(dir + "/huge-faces.off", "2000000000 faces");
+  WriteText(dir + "/huge-face.off",
+    "OFF\n4 4 0\n" + tetraOff + "2000000000 0 1 2\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  failures += ExpectError(dir + "/huge-face.off", "face 0 of 4 claims 2000000000 vertices");
+  const std::string legacyHeader = "# vtk DataFile Version 3.0\nhostile\nASCII\nDATASET POLYDATA\n";
+  WriteText(dir + "/huge.vtk", legacyHeader + "POINTS 2000000000 float\n0 0 0 1 0 0 0 1 0 0 0 1\n");
+  failures += ExpectError(dir + "/huge.vtk", "the header claims 2000000000 points");
+  WriteText(dir + "/huge-cells.vtk", legacyHeader +
+      "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 3000000000\n3 0 2 1\n");
+  failures += ExpectError(dir + "/huge-cells.vtk", "3000000000 values");
+  WriteText(dir + "/huge-data.vtk", legacyHeader +
+      "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 1 4\n3 0 2 1\nPOINT_DATA 2000000000\n");
+  failures += ExpectError(dir + "/huge-data.vtk", "2000000000 point data tuples");
+  WriteText(dir + "/huge.vtp",
+    "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\">\n"
+    "<PolyData><Piece NumberOfPoints=\"4\" NumberOfPolys=\"2000000000\">\n"
+    "</Piece></PolyData></VTKFile>\n");
+  failures += ExpectError(dir + "/huge.vtp", "the header claims 2000000000 polygons");
+  WriteText(dir + "/huge-field.vtk", legacyHeader +
+      "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 1 4\n3 0 2 1\nPOINT_DATA 4\n"
+      "FIELD FieldData 1\nbig 1000000000 4 float\n0 0 0 0\n");
+  failures += ExpectError(dir + "/huge-field.vtk", "claims 1000000000 x 4 values");
+  WriteText(dir + "/components.vtp",
+    "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\">\n"
+    "<PolyData><Piece NumberOfPoints=\"4\" NumberOfPolys=\"1\">\n<Points><DataArray "
+    "type=\"Float32\" NumberOfComponents=\"1000000000\" format=\"ascii\">0 0 0</DataArray>"
+    "</Points></Piece></PolyData></VTKFile>\n");
+  failures += ExpectError(dir + "/components.vtp", "claims 1000000000 components per tuple");
+  // A binary STL whose count claims 2e9 triangles and holds one: VTK's reader would allocate
+  // the claim (and end the program).
+  std::string stl(80, 'x');
+  const unsigned char count[4] = { 0x00, 0x94, 0x35, 0x77 }; // 2,000,000,000, little-endian
+  stl.append(reinterpret_cast<const char*>(count), 4);
+  stl.append(50, '\0');
+  WriteText(dir + "/huge.stl", stl);
+  failures += ExpectError(dir + "/huge.stl", "the header claims 2000000000 triangles");
+  // Not regular files: a directory, and a device that never ends.
+  const std::string folder = dir + "/folder.off";
+  mkdir(folder.c_str(), 0755);
+  failures += ExpectError(folder, "is a directory");
+  const std::string zero = dir + "/zero.ply";
+  std::remove(zero.c_str());
+  if (symlink("/dev/zero", zero.c_str()) == 0)
+  {
+    failures += ExpectError(zero, "is not a regular file");
+  }
+  return failures;
+}
+
 // OBJ with texture coordinates and normals, faces in an order unrelated to the `v` order,
 // polygons, relative indices and an unused vertex: point i must still be the file's i-th `v`.
 int TestObjVertexOrder(const std::string& dir)
@@ -237,6 +298,10 @@ int TestSurfaceMeshReader(int argc, char* argv[])
   stl->SetFileName((dir + "/reader.STL").c_str()); // extensions are case-insensitive
   stl->Write();
   failures += ExpectMesh(dir + "/reader.STL", n, m); // the STL reader merges points again
+  stl->SetFileTypeToBinary(); // its triangle count is checked against the file size
+  stl->SetFileName((dir + "/reader-binary.stl").c_str());
+  stl->Write();
+  failures += ExpectMesh(dir + "/reader-binary.stl", n, m);
 
   // A tetrahedron in OFF with comments, counts on the header line and a face color; and
   // the same in OBJ.
@@ -266,6 +331,7 @@ int TestSurfaceMeshReader(int argc, char* argv[])
     vtkLogger::SetStderrVerbosity(static_cast<vtkLogger::Verbosity>(verbosity));
   }
   failures += TestHostileFiles(dir);
+  failures += TestHostileSizes(dir);
   failures += TestObjVertexOrder(dir);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

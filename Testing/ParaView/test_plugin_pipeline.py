@@ -1,6 +1,7 @@
 """pvpython: the filters by their menu names on a real mesh (CGAL's hand, from libcgal-demo):
 OFF reader -> Spherical Conformal Map -> Mobius Center -> Spherical Scale Grid, and
-SO3 Register of the centered map with itself."""
+SO3 Register of the hand with a copy turned by a known rotation (ParaView's Transform), which
+must find that rotation and map every vertex near its turned counterpart."""
 import math
 import os
 import sys
@@ -35,10 +36,33 @@ areas = servermanager.Fetch(centered).GetCellData().GetArray("SurfaceArea")
 surface_area = sum(areas.GetValue(i) for i in range(areas.GetNumberOfTuples()))
 assert abs(total - surface_area) <= 1e-9 * surface_area, (total, surface_area)
 
-registration = SO3Register(Source=centered, Target=centered, Resolution=64)
+# The copy, turned by 90 degrees about z: x' = (-y, x, z).
+turned = Transform(Input=mesh)
+turned.Transform = "Transform"
+turned.Transform.Rotate = [0.0, 0.0, 90.0]
+expected = [0, -1, 0, 1, 0, 0, 0, 0, 1]
+turned_centered = MobiusCenter(Input=SphericalConformalMap(Input=turned))
+registration = SO3Register(Source=centered, Target=turned_centered, Resolution=64)
 rotation = [field(registration, "Rotation", k) for k in range(9)]
-angle = math.degrees(math.acos(max(-1.0, min(1.0, (rotation[0] + rotation[4] + rotation[8] - 1) / 2))))
-print(f"pipeline on hand.off: self-registration angle {angle:.4f} deg, "
+# The angle of expected^T rotation: 0 when the registration found the turn.
+relative_trace = sum(expected[3 * i + k] * rotation[3 * i + k] for i in range(3) for k in range(3))
+angle = math.degrees(math.acos(max(-1.0, min(1.0, (relative_trace - 1) / 2))))
+print(f"pipeline on hand.off: the 90 degree turn found to within {angle:.4f} deg, "
       f"error {field(registration, 'RegistrationError'):.2e}")
 assert field(registration, "Determinant") == 1
-assert angle < 0.1, angle
+assert angle < 1.0, (angle, rotation)
+
+# Every source vertex lands near its turned counterpart (the same vertex of the copy).
+correspondence = DenseCorrespondence(Source=registration, Target=turned_centered)
+result = servermanager.Fetch(correspondence)
+truth = servermanager.Fetch(turned)
+mapped = result.GetPointData().GetArray("MappedPoints")
+ids = result.GetPointData().GetArray("InputPointId")
+bounds = truth.GetBounds()
+diagonal = math.dist(bounds[0::2], bounds[1::2])
+errors = [math.dist(mapped.GetTuple3(k), truth.GetPoint(int(ids.GetTuple1(k))))
+          for k in range(result.GetNumberOfPoints())]
+mean_error = sum(errors) / len(errors) / diagonal
+print(f"mean distance to the true counterpart: {100 * mean_error:.3f}% of the diagonal")
+assert len(errors) == truth.GetNumberOfPoints(), (len(errors), truth.GetNumberOfPoints())
+assert mean_error < 0.005, mean_error
