@@ -30,7 +30,6 @@ fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" \
     -DCMAKE_BUILD_TYPE=Release \
-    -DMOBIUS_NATIVE_ARCH=ON \
     -DPython3_EXECUTABLE=/usr/bin/python3 \
     -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
     -DCMAKE_C_COMPILER_LAUNCHER=ccache
