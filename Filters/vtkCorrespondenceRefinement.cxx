@@ -92,6 +92,24 @@ std::vector<Matrix3> CandidateStarts(vtkPolyData* aligned, bool searchCandidates
   return starts;
 }
 
+// The Möbius map of the source samples under one candidate: each sample rotated by `start`
+// and located on the target sphere, sent to the nearest corner of its triangle.
+std::vector<mobius::Index> StartingSampleMap(const Matrix3& start, const mobius::Points& sourceSphere,
+  const std::vector<mobius::Index>& samples, const mobius::SphericalPointLocator& targetLocator,
+  const mobius::Triangles& targetTriangles)
+{
+  std::vector<mobius::Index> targetVertex(samples.size());
+  for (size_t s = 0; s < samples.size(); ++s)
+  {
+    const Eigen::Vector3d p = start * sourceSphere.row(samples[s]).transpose();
+    const mobius::SphericalLocation location = targetLocator.Locate(p);
+    Eigen::Index corner = 0;
+    location.Barycentric.maxCoeff(&corner);
+    targetVertex[s] = targetTriangles(location.Triangle, corner);
+  }
+  return targetVertex;
+}
+
 void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector<double>& values)
 {
   vtkNew<vtkDoubleArray> array;
@@ -212,7 +230,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     parameters.FinalSize = std::min(this->ScreeningBasisSize, this->BasisSize);
     parameters.FullResolutionIterations = this->FullResolutionIterations;
 
-    // Every candidate up to the screening size; the most orthogonal functional map goes on.
+    // Every candidate up to the screening size; the one of the expected orientation with the
+    // most orthogonal functional map goes on.
     const std::vector<Matrix3> starts = CandidateStarts(inputs[0], this->SearchCandidates);
     vtkDataArray* determinantArray = inputs[0]->GetFieldData()->GetArray("Determinant");
     const double bestDeterminant =
@@ -229,17 +248,9 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     bool bestRightSide = false;
     for (size_t c = 0; c < starts.size(); ++c)
     {
-      std::vector<mobius::Index> initial(samples.size());
-      for (size_t s = 0; s < samples.size(); ++s)
-      {
-        const Eigen::Vector3d p = starts[c] * maps[0].Sphere.row(samples[s]).transpose();
-        const mobius::SphericalLocation location = locator.Locate(p);
-        Eigen::Index corner = 0;
-        location.Barycentric.maxCoeff(&corner);
-        initial[s] = maps[1].Triangles(location.Triangle, corner);
-      }
-      mobius::SampleMap screened =
-        mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], initial, parameters);
+      mobius::SampleMap screened = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
+        StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
+        parameters);
       residuals.push_back(screened.OrthogonalityResidual);
       orientation.push_back(screened.OrientationAgreement);
       coverage.push_back(screened.TargetCoverage);
