@@ -4,7 +4,6 @@
 #include "vtkCorrespondenceOutput.h"
 #include "vtkSphericalMapData.h"
 
-#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -17,22 +16,6 @@
 #include <sstream>
 
 vtkStandardNewMacro(vtkDenseCorrespondence);
-
-namespace
-{
-std::string CheckSurfacePoints(vtkPolyData* map)
-{
-  vtkDataArray* surface = map->GetPointData()->GetArray(mobius::vtk::SurfacePointsArrayName);
-  if (!surface || surface->GetNumberOfComponents() != 3 ||
-    surface->GetNumberOfTuples() != map->GetNumberOfPoints())
-  {
-    return std::string("it has no 3-component point array '") +
-      mobius::vtk::SurfacePointsArrayName +
-      "' (the original surface positions; vtkSphericalConformalMap makes it)";
-  }
-  return {};
-}
-}
 
 //------------------------------------------------------------------------------
 vtkDenseCorrespondence::vtkDenseCorrespondence()
@@ -99,7 +82,7 @@ int vtkDenseCorrespondence::ComputeOutput(
     }
     if (error.empty() && (k == located || this->OutputGeometry == SOURCE))
     {
-      error = CheckSurfacePoints(inputs[k]);
+      error = mobius::vtk::CheckSurfacePoints(inputs[k]);
     }
     if (!error.empty())
     {

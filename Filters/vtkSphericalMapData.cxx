@@ -192,7 +192,7 @@ std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& 
   return error;
 }
 
-std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints)
+std::string CheckSurfacePoints(vtkPolyData* input)
 {
   vtkDataArray* array = input->GetPointData()->GetArray(SurfacePointsArrayName);
   if (!array || array->GetNumberOfComponents() != 3 ||
@@ -201,6 +201,17 @@ std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints)
     return std::string("it has no 3-component point array '") + SurfacePointsArrayName +
       "' (the original surface positions; vtkSphericalConformalMap makes it)";
   }
+  return {};
+}
+
+std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints)
+{
+  const std::string error = CheckSurfacePoints(input);
+  if (!error.empty())
+  {
+    return error;
+  }
+  vtkDataArray* array = input->GetPointData()->GetArray(SurfacePointsArrayName);
   surfacePoints.resize(array->GetNumberOfTuples(), 3);
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
   {

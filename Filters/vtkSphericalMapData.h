@@ -59,7 +59,10 @@ std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas);
 std::string ExtractSphericalMap(vtkPolyData* input, bool allowPointSet, Points& points,
   Triangles& triangles, Vector& areas);
 
-/// Reads point data `SurfacePoints` (3 components, one tuple per point, finite).
+/// Checks that point data `SurfacePoints` is there with 3 components and one tuple per point.
+std::string CheckSurfacePoints(vtkPolyData* input);
+
+/// Reads point data `SurfacePoints` (CheckSurfacePoints, and finite).
 std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints);
 
 /// For a filter's RequestData, inside `catch (...)`: reports the exception being handled

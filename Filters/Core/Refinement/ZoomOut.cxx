@@ -207,35 +207,24 @@ SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface
   const ZoomOutParameters& parameters)
 {
   const int k = std::min<int>(flips + 1, static_cast<int>(reversed.FunctionalMap.rows()));
-  const int last = k - 1;
-  // The source's own low-frequency functional map in the reversed map's frame.
-  const std::vector<Index> samples = reversed.TargetVertex;
-  const Eigen::MatrixXd low =
-    FitFunctionalMap(GatherRows(source.Embedding, source.Samples, k),
-      GatherRows(target.Embedding, samples, k));
+  // The reversed map's functional map on the first k functions, refitted from its samples.
+  const Eigen::MatrixXd low = FitFunctionalMap(GatherRows(source.Embedding, source.Samples, k),
+    GatherRows(target.Embedding, reversed.TargetVertex, k));
   ZoomOutParameters continued = parameters;
   continued.StartSize = NextBasisSize(k, parameters.Growth);
   SampleMap best = reversed;
   bool found = false;
-  for (int first = 1; first <= last; ++first)
+  for (int row = 1; row < k; ++row) // row 0 is the constant function: never negated
   {
-    for (int second = first; second <= first; ++second)
+    Eigen::MatrixXd flipped = low;
+    flipped.row(row) *= -1;
+    SampleMap repaired = ZoomOutOnSamples(source, target,
+      SampleMapFromFunctionalMap(source, target, flipped, parameters.NumberOfThreads), continued);
+    if (HasOrientation(repaired, preserveOrientation) &&
+      (!found || repaired.OrthogonalityResidual < best.OrthogonalityResidual))
     {
-      Eigen::MatrixXd flipped = low;
-      flipped.row(first) *= -1;
-      if (second != first)
-      {
-        flipped.row(second) *= -1;
-      }
-      SampleMap repaired = ZoomOutOnSamples(source, target,
-        SampleMapFromFunctionalMap(source, target, flipped, parameters.NumberOfThreads),
-        continued);
-      if (HasOrientation(repaired, preserveOrientation) &&
-        (!found || repaired.OrthogonalityResidual < best.OrthogonalityResidual))
-      {
-        best = std::move(repaired);
-        found = true;
-      }
+      best = std::move(repaired);
+      found = true;
     }
   }
   return best;

@@ -89,9 +89,8 @@ std::vector<Index> SampleMapFromFunctionalMap(const SpectralSurface& source,
 /// Tries to turn a map that reverses orientation where it should not (a bilaterally
 /// symmetric shape mapped onto the mirror image of the target: C = D C_true, with D = -1 on
 /// the source's antisymmetric eigenfunctions) into one that preserves it: negates, in turn,
-/// each of the first `flips` non-constant rows of the map's functional map at
-/// `parameters.StartSize` functions (plus the pair of each with the next), runs ZoomOut from
-/// each, and returns the most orthogonal result that agrees with the expected orientation,
+/// each of the first `flips` non-constant rows of the map's functional map (refitted on
+/// flips + 1 functions), runs ZoomOut from each on to `parameters.FinalSize`, and returns the most orthogonal result that agrees with the expected orientation,
 /// or `reversed` itself if none does.
 SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& reversed, bool preserveOrientation, int flips,
