@@ -10,21 +10,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MOBIUS_BUILD_DIR:-$root/build}"
 
 # --- 1. Debian packages ------------------------------------------------------------
-mapfile -t packages < <(grep -v -E '^\s*(#|$)' "$root/scripts/debian-packages.txt")
-missing=()
-for package in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$package")
-  fi
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
-  sudo=""
-  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-  export DEBIAN_FRONTEND=noninteractive
-  $sudo apt-get update -q
-  $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+"$root/scripts/install-debian-packages.sh" "$root/scripts/debian-packages.txt"
 
 # --- 2. Configure and build -------------------------------------------------------
 if [ ! -f "$build/CMakeCache.txt" ]; then
