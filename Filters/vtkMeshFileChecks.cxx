@@ -269,7 +269,26 @@ std::string CheckPLYFile(const std::string& fileName)
     if (element.Name == "vertex")
     {
       numberOfVertices = element.Count;
+      // VTK 9.2's PLY reader crashes (a segmentation fault in vtkPLY::find_element) on a vertex
+      // element without x, y or z, and on a file without a vertex element (found by the
+      // fuzzer, Testing/Fuzz/Regressions/ply-*).
+      for (const char* coordinate : { "x", "y", "z" })
+      {
+        const bool found = std::any_of(element.Properties.begin(), element.Properties.end(),
+          [coordinate](const Property& property) {
+            return !property.IsList && property.Name == coordinate;
+          });
+        if (!found)
+        {
+          return std::string("the vertex element has no property '") + coordinate +
+            "' (a PLY mesh needs x, y and z)";
+        }
+      }
     }
+  }
+  if (numberOfVertices < 0)
+  {
+    return "the PLY file has no 'vertex' element";
   }
   // Faces may come before the vertices; their largest index is checked at the end.
   long long largestIndex = -1, largestIndexFace = -1;
