@@ -271,7 +271,7 @@ std::string CheckPLYFile(const std::string& fileName)
       numberOfVertices = element.Count;
       // VTK 9.2's PLY reader crashes (a segmentation fault in vtkPLY::find_element) on a vertex
       // element without x, y or z, and on a file without a vertex element (found by the
-      // fuzzer, Testing/Fuzz/Regressions/ply-*).
+      // fuzzer, Testing/Fuzz/Regressions/ply-vertex-without-y, ply-no-vertex-element).
       for (const char* coordinate : { "x", "y", "z" })
       {
         const bool found = std::any_of(element.Properties.begin(), element.Properties.end(),
@@ -289,6 +289,18 @@ std::string CheckPLYFile(const std::string& fileName)
   if (numberOfVertices < 0)
   {
     return "the PLY file has no 'vertex' element";
+  }
+  // A face element without its index list crashes VTK's reader too (it reads the faces
+  // anyway; found by the fuzzer, Testing/Fuzz/Regressions/ply-face-without-indices).
+  for (const auto& element : elements)
+  {
+    if (element.Name == "face" &&
+      std::none_of(element.Properties.begin(), element.Properties.end(), [](const Property& property) {
+        return property.IsList && (property.Name == "vertex_indices" || property.Name == "vertex_index");
+      }))
+    {
+      return "the face element has no list property 'vertex_indices'";
+    }
   }
   // Faces may come before the vertices; their largest index is checked at the end.
   long long largestIndex = -1, largestIndexFace = -1;

@@ -19,7 +19,8 @@ namespace mobius
 namespace vtk
 {
 /// Fails on a malformed or truncated PLY file, one without a vertex element with x, y and z
-/// properties, a vertex with a NaN or infinite x, y or z,
+/// properties or with a face element without its index list, a vertex with a NaN or
+/// infinite x, y or z,
 /// and a face (list `vertex_indices` or `vertex_index`) with fewer than 3 vertices or an
 /// index outside [0, number of vertices).
 std::string CheckPLYFile(const std::string& fileName);
