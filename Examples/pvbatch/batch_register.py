@@ -32,9 +32,16 @@ parser.add_argument("--max-failures", type=int, default=0,
 parser.add_argument("meshes", nargs="+")
 args = parser.parse_args()
 
-# The filters' Python package sits beside the plugin in the build tree:
-# lib/paraview-5.11/plugins/MobiusRegistration/ -> lib/python3/dist-packages.
-sys.path.insert(0, os.path.normpath(os.path.join(os.path.dirname(args.plugin), "../../../python3/dist-packages")))
+# The filters' Python package sits beside the plugin: from <libdir>/paraview-5.11/plugins/
+# MobiusRegistration/ up to the folder holding python3/dist-packages (lib/, also when the
+# libdir is lib/x86_64-linux-gnu). Installed under /usr it is importable anyway.
+folder = os.path.dirname(os.path.abspath(args.plugin))
+for _ in range(5):
+    folder = os.path.dirname(folder)
+    candidate = os.path.join(folder, "python3", "dist-packages")
+    if os.path.isdir(os.path.join(candidate, "mobiusregistration")):
+        sys.path.insert(0, candidate)
+        break
 from mobiusregistration import (  # noqa: E402
     vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register, vtkSphericalConformalMap,
     vtkSurfaceMeshReader)
