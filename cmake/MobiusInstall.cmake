@@ -60,14 +60,19 @@ if (MOBIUS_PARAVIEW)
   # It reads no other plugin list: the paraview.plugins.xml in its plugin directory is
   # never loaded (no /usr/bin/paraview.conf). So the plugin stays in ParaView's plugin
   # directory and a relative link in bin/plugins makes ParaView load it.
-  set(mobius_autoload_default OFF)
-  if (CMAKE_INSTALL_PREFIX STREQUAL "/usr")
-    set(mobius_autoload_default ON)
+  # AUTO: the link for the /usr prefix (where Debian's ParaView is), decided again whenever
+  # the prefix changes.
+  set(MOBIUS_PARAVIEW_AUTOLOAD "AUTO" CACHE STRING
+    "Install a link in <prefix>/bin/plugins so that a ParaView in the same prefix loads the plugin at start-up: AUTO (for /usr), ON or OFF")
+  set_property(CACHE MOBIUS_PARAVIEW_AUTOLOAD PROPERTY STRINGS AUTO ON OFF)
+  set(mobius_autoload "${MOBIUS_PARAVIEW_AUTOLOAD}")
+  if (mobius_autoload STREQUAL "AUTO")
+    set(mobius_autoload OFF)
+    if (CMAKE_INSTALL_PREFIX STREQUAL "/usr")
+      set(mobius_autoload ON)
+    endif ()
   endif ()
-  option(MOBIUS_PARAVIEW_AUTOLOAD
-    "Install a link in <prefix>/bin/plugins so that ParaView installed in the same prefix loads the plugin at start-up"
-    ${mobius_autoload_default})
-  if (MOBIUS_PARAVIEW_AUTOLOAD)
+  if (mobius_autoload)
     set(mobius_plugin_relative
       "${CMAKE_INSTALL_LIBDIR}/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so")
     file(RELATIVE_PATH mobius_autoload_target "/prefix/${CMAKE_INSTALL_BINDIR}/plugins"

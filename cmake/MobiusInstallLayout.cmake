@@ -9,15 +9,12 @@ set(mobius_python_destination "lib/python3/dist-packages")
 # The demo mesh, installed with the program; mobius-register finds it relative to itself.
 set(mobius_mesh_destination "${CMAKE_INSTALL_DATADIR}/mobius-registration/meshes")
 
-# Outside /usr the dynamic linker does not know the libdir: installed programs and the
-# Python extension find the module's library by a path relative to themselves, which keeps
-# any prefix (and `cmake --install --prefix`, DESTDIR staging) working. Under /usr the
-# libdir is on the default search path and Debian wants no RPATH. (The plugin gets its
-# own from paraview_plugin_build.)
-if (NOT CMAKE_INSTALL_PREFIX STREQUAL "/usr")
-  file(RELATIVE_PATH mobius_bin_to_lib "/prefix/${CMAKE_INSTALL_BINDIR}" "/prefix/${CMAKE_INSTALL_LIBDIR}")
-  file(RELATIVE_PATH mobius_python_to_lib "/prefix/${mobius_python_destination}/mobiusregistration"
-    "/prefix/${CMAKE_INSTALL_LIBDIR}")
-  list(APPEND CMAKE_INSTALL_RPATH "$ORIGIN/${mobius_bin_to_lib}" "$ORIGIN/${mobius_python_to_lib}")
-  list(REMOVE_DUPLICATES CMAKE_INSTALL_RPATH)
-endif ()
+# Installed programs and the Python extension find the module's library by a path relative
+# to themselves ($ORIGIN), as the plugin does (paraview_plugin_build adds one): any prefix,
+# `cmake --install --prefix` and DESTDIR staging keep working, and a staged /usr tree can be
+# tested before it is in place. (Under /usr the libdir is on the linker's path anyway.)
+file(RELATIVE_PATH mobius_bin_to_lib "/prefix/${CMAKE_INSTALL_BINDIR}" "/prefix/${CMAKE_INSTALL_LIBDIR}")
+file(RELATIVE_PATH mobius_python_to_lib "/prefix/${mobius_python_destination}/mobiusregistration"
+  "/prefix/${CMAKE_INSTALL_LIBDIR}")
+list(APPEND CMAKE_INSTALL_RPATH "$ORIGIN/${mobius_bin_to_lib}" "$ORIGIN/${mobius_python_to_lib}")
+list(REMOVE_DUPLICATES CMAKE_INSTALL_RPATH)

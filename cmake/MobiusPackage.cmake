@@ -35,13 +35,12 @@ else ()
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3-vtk9, python3-numpy")
 endif ()
 
-# Maintainer scripts: ldconfig for the library in the libdir, and the bytecode Python
-# writes on first import removed before the package so that removal leaves nothing.
+# Maintainer scripts: CPack's own postinst/postrm run ldconfig for the library; the prerm
+# removes the bytecode Python writes on first import, so that removal leaves nothing.
 set(mobius_python_package_dir "${CMAKE_INSTALL_PREFIX}/${mobius_python_destination}/mobiusregistration")
 configure_file("${CMAKE_CURRENT_LIST_DIR}/debian/prerm.in" "${CMAKE_BINARY_DIR}/debian/prerm" @ONLY
   FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
-configure_file("${CMAKE_CURRENT_LIST_DIR}/debian/triggers" "${CMAKE_BINARY_DIR}/debian/triggers" COPYONLY)
-set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA "${CMAKE_BINARY_DIR}/debian/prerm;${CMAKE_BINARY_DIR}/debian/triggers")
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA "${CMAKE_BINARY_DIR}/debian/prerm")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 
 install(FILES "${CMAKE_SOURCE_DIR}/README.md" DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/doc/mobius-registration")

@@ -95,6 +95,10 @@ for interpreter in interpreters:
 if args.pvpython:
     plugins = installed("lib*/**/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so")
     check(len(plugins) == 1, f"plugin files: {plugins}")
+    # The autoload link (installed for the /usr prefix) must lead to the installed plugin.
+    for link in installed("bin/plugins/*"):
+        check(plugins and os.path.realpath(link) == os.path.realpath(plugins[0]),
+              f"{link} does not lead to the installed plugin")
     if plugins:
         script = (
             "import sys\n"
