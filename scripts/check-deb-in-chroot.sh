@@ -38,11 +38,24 @@ echo "== mobius-register"
 in_chroot mobius-register --version
 in_chroot mobius-benchmark --version
 test -s "$root/usr/share/man/man1/mobius-register.1" && test -s "$root/usr/share/man/man1/mobius-benchmark.1"
-in_chroot bash -c 'mkdir -p /tmp/demo && cd /tmp/demo && mobius-register --resolution 64 --refine none --quiet --json -o demo > demo.json && test -s demo.vtp && grep -q /usr/share/mobius-registration/meshes/cow.off demo.json'
+in_chroot bash -c 'rm -rf /tmp/demo && mkdir /tmp/demo && cd /tmp/demo && mobius-register --resolution 64 --refine none --quiet --json -o demo > demo.json && test -s demo.vtp && grep -q /usr/share/mobius-registration/meshes/cow.off demo.json'
 in_chroot bash -c 'cd /tmp/demo && mobius-register --resolution 64 --quiet --force -o demo && echo "demo (refined) ran"'
 
 echo "== python3"
-in_chroot python3 -c 'import mobiusregistration, numpy as np; print(mobiusregistration.__file__); r = mobiusregistration.register("/usr/share/mobius-registration/meshes/cow.off", "/usr/share/mobius-registration/meshes/cow.off", resolution=64, refine=False); print(r); assert np.abs(r.mapped_points - r.transfer(r.mapped_points)).max() < 1e-9'
+in_chroot python3 -c '
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+import mobiusregistration
+print(mobiusregistration.__file__)
+cow = "/usr/share/mobius-registration/meshes/cow.off"
+reader = mobiusregistration.vtkSurfaceMeshReader()
+reader.SetFileName(cow)
+reader.Update()
+positions = vtk_to_numpy(reader.GetOutput().GetPoints().GetData())
+result = mobiusregistration.register(cow, cow, resolution=64, refine=False)
+print(result)
+# The target positions carried over are the mapped points.
+assert np.abs(result.transfer(positions) - result.mapped_points).max() < 1e-6'
 
 echo "== pvpython: the plugin loaded at start-up, the Python package importable"
 in_chroot pvpython --force-offscreen-rendering -c '
@@ -54,6 +67,18 @@ conformal.UpdatePipeline()
 assert servermanager.Fetch(conformal).GetNumberOfPoints() > 0
 import mobiusregistration
 print("pvpython: plugin filters present without LoadPlugin; mobiusregistration from", mobiusregistration.__file__)'
+
+echo "== paraview (GUI, under Xvfb): the filters are there at start-up"
+in_chroot apt-get install -y -q --no-install-recommends xvfb xauth  # for this check only
+cat > "$root/tmp/gui_check.py" <<'PY'
+from paraview.simple import *
+with open("/tmp/gui_check.txt", "w") as f:
+    f.write("SphericalConformalMap" in globals() and "RefineCorrespondence" in globals() and "found" or "missing")
+PY
+rm -f "$root/tmp/gui_check.txt"
+in_chroot xvfb-run -a paraview --script=/tmp/gui_check.py --exit || true
+echo "paraview GUI: the plugin's filters $(cat "$root/tmp/gui_check.txt" 2>/dev/null || echo "not checked: the GUI did not run")"
+grep -q found "$root/tmp/gui_check.txt"
 
 echo "== apt remove"
 in_chroot apt-get remove -y -q mobius-registration
