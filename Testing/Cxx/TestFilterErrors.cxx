@@ -143,6 +143,43 @@ int TestExceptionsBecomeErrors()
   failures += ExpectError(correspondence, "observer failed");
   return failures;
 }
+
+// A face listed twice (either way round) is named as a duplicate, not only through the three
+// non-manifold edges it makes; so is the two-triangle "pillow" FillHoles makes of a single
+// triangle, which has no inside to map (its flow's distortion was infinite).
+int TestDuplicateTriangles()
+{
+  int failures = 0;
+  auto mesh = BumpyMesh(2);
+  for (bool reversed : { false, true })
+  {
+    auto doubled = vtkSmartPointer<vtkPolyData>::New();
+    doubled->DeepCopy(mesh);
+    vtkIdType npts;
+    const vtkIdType* ids;
+    doubled->GetPolys()->GetCellAtId(5, npts, ids);
+    const vtkIdType copy[3] = { ids[0], reversed ? ids[2] : ids[1], reversed ? ids[1] : ids[2] };
+    doubled->GetPolys()->InsertNextCell(3, copy);
+    vtkNew<vtkSphericalConformalMap> map;
+    map->SetInputData(doubled);
+    failures += ExpectError(map, "1 duplicate triangle");
+  }
+  vtkNew<vtkPolyData> triangle;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  triangle->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType corners[3] = { 0, 1, 2 };
+  polys->InsertNextCell(3, corners);
+  triangle->SetPolys(polys);
+  vtkNew<vtkSphericalConformalMap> pillow;
+  pillow->SetInputData(triangle);
+  pillow->FillHolesOn();
+  failures += ExpectError(pillow, "1 duplicate triangle");
+  return failures;
+}
 }
 
 int TestFilterErrors(int, char*[])
@@ -150,5 +187,6 @@ int TestFilterErrors(int, char*[])
   int failures = 0;
   failures += TestOutOfRangeIds();
   failures += TestExceptionsBecomeErrors();
+  failures += TestDuplicateTriangles();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
