@@ -256,12 +256,62 @@ std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element
 }
 }
 
+namespace
+{
+// What VTK 9.2's PLY reader needs of the header, or it crashes: a vertex element with
+// scalar x, y and z (without them it reports "Cannot read geometry", closes the file and
+// then reads it); a face element, if any, after the vertices and with its vertex_indices (or
+// vertex_index) list.
+std::string CheckPLYLayout(const std::vector<Element>& elements)
+{
+  const auto find = [&elements](const std::string& name) {
+    return std::find_if(elements.begin(), elements.end(),
+      [&name](const Element& element) { return element.Name == name; });
+  };
+  const auto hasProperty = [](const Element& element, const std::string& name, bool list) {
+    return std::any_of(element.Properties.begin(), element.Properties.end(),
+      [&](const Property& property) { return property.Name == name && property.IsList == list; });
+  };
+  const auto vertex = find("vertex");
+  if (vertex == elements.end())
+  {
+    return "the PLY header has no 'vertex' element";
+  }
+  for (const char* coordinate : { "x", "y", "z" })
+  {
+    if (!hasProperty(*vertex, coordinate, false))
+    {
+      return std::string("the PLY vertex element has no scalar property '") + coordinate + "'";
+    }
+  }
+  const auto face = find("face");
+  if (face != elements.end())
+  {
+    if (face < vertex)
+    {
+      return "the PLY face element comes before the vertex element, which VTK's PLY reader "
+             "cannot read; list the vertices first";
+    }
+    if (!hasProperty(*face, "vertex_indices", true) && !hasProperty(*face, "vertex_index", true))
+    {
+      return "the PLY face element has no list property 'vertex_indices'";
+    }
+  }
+  return {};
+}
+}
+
 std::string CheckPLYFile(const std::string& fileName)
 {
   std::ifstream in(fileName, std::ios::binary);
   Encoding encoding = Encoding::Ascii;
   std::vector<Element> elements;
   std::string error = ReadHeader(in, encoding, elements);
+  if (!error.empty())
+  {
+    return error;
+  }
+  error = CheckPLYLayout(elements);
   if (!error.empty())
   {
     return error;
@@ -274,7 +324,8 @@ std::string CheckPLYFile(const std::string& fileName)
       numberOfVertices = element.Count;
     }
   }
-  // Faces may come before the vertices; their largest index is checked at the end.
+  // CheckPLYLayout puts the vertices before the faces; the largest index is checked again at
+  // the end all the same.
   long long largestIndex = -1, largestIndexFace = -1;
   ValueReader reader(in, encoding);
   for (const auto& element : elements)

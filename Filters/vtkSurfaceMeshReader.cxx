@@ -422,7 +422,7 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
   }
   if (!error.empty() && !parserError.empty())
   {
-    return "the file is not well-formed XML: " + VTKMessageReason(parserError);
+    return "the VTK XML file cannot be parsed: " + VTKMessageReason(parserError);
   }
   return VTKMessageReason(error);
 }

@@ -237,6 +237,9 @@ off_tetra = bytes_of("off", tetra).decode()
 ply_tetra = bytes_of("ply-ascii", tetra).decode()
 vtk_tetra = bytes_of("vtk-ascii", tetra).decode()
 vtp_tetra = bytes_of("vtp-ascii", tetra).decode()
+ply_faces_first = ("ply\nformat ascii 1.0\nelement face 4\nproperty list uchar int vertex_indices\n"
+                   "element vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+                   "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n0 0 0\n1 0 0\n0 2 0\n0 0 3\n")
 counts = {
     "off face count 2e9": ("c1.off", off_tetra.replace("4 4 0", "4 2000000000 0"), ["2000000000"]),
     "off negative vertex count": ("c2.off", off_tetra.replace("4 4 0", "-4 4 0"), ["count"]),
@@ -251,6 +254,16 @@ counts = {
     "ply list count 255 on a short line": ("c8.ply", ply_tetra.replace("3 0 2 1", "255 0 2 1"), ["face 0"]),
     "ply face before the vertices it names": ("c9.ply", ply_tetra.replace("3 1 2 3", "3 1 2 4"),
                                               ["refers to vertex 4"]),
+    # Headers VTK's PLY reader crashed on (it reads x, y, z and vertex_indices, in that order).
+    "ply vertex without z": ("c25.ply", ply_tetra.replace("property double z", "property double w"),
+                             ["no scalar property 'z'"]),
+    "ply face without vertex_indices": ("c26.ply", ply_tetra.replace("vertex_indices", "corners"),
+                                        ["no list property 'vertex_indices'"]),
+    "ply no vertex element": ("c27.ply", ply_tetra.replace("element vertex", "element point"),
+                              ["no 'vertex' element"]),
+    "ply faces before vertices": ("c28.ply", ply_faces_first, ["before the vertex element"]),
+    "ply vertices only": ("c29.ply", ply_tetra.replace("element face 4", "element face 0").split("3 0 2 1")[0],
+                          ["no triangles"]),
     "vtk negative index": ("c10.vtk", vtk_tetra.replace("3 0 2 1", "3 0 2 -1"), ["-1"]),
     "vtk cell longer than the connectivity": ("c11.vtk", vtk_tetra.replace("3 0 3 2", "9 0 3 2"),
                                               ["cell 3 claims 9 points"]),

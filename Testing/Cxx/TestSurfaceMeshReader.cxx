@@ -292,6 +292,21 @@ int TestHostileText(const std::string& dir)
     MOBIUS_EXPECT(!catcher.Error.empty() && body.find('\n') == std::string::npos &&
       body.find('\x1b') == std::string::npos && body.find('\x01') == std::string::npos);
   }
+  // Headers VTK's PLY reader crashed on: no z, no vertex_indices, faces before vertices.
+  const std::string tetra = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  std::string noZ = AsciiPly(tetra);
+  noZ.replace(noZ.find("property float z"), 16, "property float w");
+  WriteText(dir + "/no-z.ply", noZ);
+  failures += ExpectError(dir + "/no-z.ply", "the PLY vertex element has no scalar property 'z'");
+  std::string noIndices = AsciiPly(tetra);
+  noIndices.replace(noIndices.find("vertex_indices"), 14, "corners");
+  WriteText(dir + "/no-indices.ply", noIndices);
+  failures += ExpectError(dir + "/no-indices.ply", "no list property 'vertex_indices'");
+  WriteText(dir + "/faces-first.ply",
+    "ply\nformat ascii 1.0\nelement face 4\nproperty list uchar int vertex_indices\nelement vertex 4\n"
+    "property float x\nproperty float y\nproperty float z\nend_header\n" + tetra +
+    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  failures += ExpectError(dir + "/faces-first.ply", "face element comes before the vertex element");
   WriteText(dir + "/empty-binary.stl", std::string(80, 'x') + std::string(4, '\0'));
   failures += ExpectError(dir + "/empty-binary.stl", "holds no triangles");
   return failures;
