@@ -262,12 +262,19 @@ int vtkSphericalConformalMap::ComputeOutput(
     filledHoles = mobius::FillHoles(points, triangles, &filled);
     provenance.Apply(filled);
   }
-  mobius::OrientConsistently(triangles);
+  const bool oriented = mobius::OrientConsistently(triangles);
   report = mobius::AnalyzeMeshTopology(points, triangles);
   if (!report.IsTopologicalSphere())
   {
     std::ostringstream message;
     message << "Cannot map the mesh to the sphere: " << mobius::DescribeTopologyProblems(report);
+    // Edges left disagreeing where no edge is non-manifold: no orientation exists, which
+    // "orientations disagree" alone does not tell (re-orienting the file would not help).
+    if (!oriented && report.NonManifoldEdges == 0 && report.InconsistentlyOrientedEdges > 0)
+    {
+      message << " (no orientation of the triangles agrees on every edge: the surface is not "
+                 "orientable, like a Moebius strip or a Klein bottle)";
+    }
     if (report.BoundaryLoops > 0 && !this->FillHoles)
     {
       message << ". Set FillHoles to close the holes";

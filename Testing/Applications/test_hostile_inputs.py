@@ -342,6 +342,11 @@ two = joined(lumpy, mesh_files.scaled(shifted(lumpy, 0, (5, 0, 0)), 0.5))
 expect_error("two components", off("two", two), ["2 connected components", "--keep-largest-component"])
 expect_result("two components, --keep-largest-component", off("two", two), two[0], ["--keep-largest-component"],
               sources=range(len(points)))
+# A closed surface with no orientation: the projective plane in 6 vertices.
+projective_plane = ([(0.1, 0.2, 0.9), (0.8, 0.1, 0.3), (0.4, 0.9, 0.2), (0.7, 0.6, 0.9), (0.2, 0.8, 0.6), (0.9, 0.4, 0.5)],
+                    [(0, 1, 2), (0, 2, 3), (0, 3, 4), (0, 4, 5), (0, 5, 1), (1, 2, 4), (2, 3, 5), (3, 4, 1), (4, 5, 2),
+                     (5, 1, 3)])
+expect_error("non-orientable closed surface", off("projective-plane", projective_plane), ["not orientable"])
 for genus in (1, 2, 3):
     expect_error(f"genus {genus}", off(f"genus{genus}", mesh_files.holed_plate(genus)), [f"genus {genus}"])
 triangle = ([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)])

@@ -180,6 +180,33 @@ int TestDuplicateTriangles()
   failures += ExpectError(pillow, "1 duplicate triangle");
   return failures;
 }
+
+// A closed, manifold surface with no orientation (the projective plane in 6 vertices) says so.
+int TestNonOrientable()
+{
+  int failures = 0;
+  vtkNew<vtkPoints> points;
+  const double positions[6][3] = { { 0.1, 0.2, 0.9 }, { 0.8, 0.1, 0.3 }, { 0.4, 0.9, 0.2 },
+    { 0.7, 0.6, 0.9 }, { 0.2, 0.8, 0.6 }, { 0.9, 0.4, 0.5 } };
+  for (const auto& p : positions)
+  {
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType faces[10][3] = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 0, 4, 5 }, { 0, 5, 1 },
+    { 1, 2, 4 }, { 2, 3, 5 }, { 3, 4, 1 }, { 4, 5, 2 }, { 5, 1, 3 } };
+  for (const auto& face : faces)
+  {
+    polys->InsertNextCell(3, face);
+  }
+  vtkNew<vtkPolyData> plane;
+  plane->SetPoints(points);
+  plane->SetPolys(polys);
+  vtkNew<vtkSphericalConformalMap> map;
+  map->SetInputData(plane);
+  failures += ExpectError(map, "the surface is not orientable");
+  return failures;
+}
 }
 
 int TestFilterErrors(int, char*[])
@@ -188,5 +215,6 @@ int TestFilterErrors(int, char*[])
   failures += TestOutOfRangeIds();
   failures += TestExceptionsBecomeErrors();
   failures += TestDuplicateTriangles();
+  failures += TestNonOrientable();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
