@@ -360,12 +360,16 @@ for label, mesh in (("tetrahedron", tetra), ("tetrahedron inside out", (tetra[0]
     name = off(label.split()[0] + str(len(outcomes)), mesh)
     expect_error(label, name, ["degenerate", "--allow-poor-maps"])
     expect_result(label + ", --allow-poor-maps", name, options=["--allow-poor-maps"], self_map=False)
-# Scale must not matter: the same mesh at 1e-12 and 1e+12, refinement included.
-for factor in (1e-12, 1e12):
+# Scale must not matter: the same mesh at 1e-150 to 1e+150, refinement included; beyond,
+# the triangles' areas are not double-precision numbers.
+for factor in (1e-150, 1e-12, 1e12, 1e150):
     small = mesh_files.scaled(lumpy, factor)
     expect_result(f"scaled {factor:g}", off(f"scaled{factor:g}", small), small[0])
     expect_result(f"scaled {factor:g}, refined", off(f"scaled{factor:g}", small), small[0],
                   ["--refine", "spectral", "--basis-size", "20"])
+for factor in (1e-200, 1e200):
+    expect_error(f"scaled {factor:g}", off(f"scaled{factor:g}", mesh_files.scaled(lumpy, factor)),
+                 ["areas", "beyond what double precision represents", "rescale"])
 expect_result("lumpy, refined", off("lumpy", lumpy), points, ["--refine", "spectral", "--basis-size", "20"])
 collinear = ([(t, 2 * t, 3 * t) for t in range(4)], tetra[1])
 expect_error("collinear points", off("collinear", collinear), ["zero-area"])

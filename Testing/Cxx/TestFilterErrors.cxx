@@ -209,6 +209,43 @@ int TestNonOrientable()
 }
 }
 
+// Scale does not matter where the areas are double-precision numbers (coordinates of 1e-100
+// had "zero-area triangles", 1e100 "no area"); beyond, the error says so.
+int TestExtremeScales()
+{
+  int failures = 0;
+  auto mesh = BumpyMesh(2);
+  for (const double scale : { 1e-100, 1e100, 1e200 })
+  {
+    auto scaled = vtkSmartPointer<vtkPolyData>::New();
+    scaled->DeepCopy(mesh);
+    for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      mesh->GetPoint(i, p);
+      scaled->GetPoints()->SetPoint(i, scale * p[0], scale * p[1], scale * p[2]);
+    }
+    vtkNew<vtkSphericalConformalMap> map;
+    map->SetInputData(scaled);
+    if (scale > 1e150) // areas of 1e400
+    {
+      failures += ExpectError(map, "beyond what double precision represents");
+      continue;
+    }
+    map->Update();
+    vtkPolyData* output = map->GetOutput();
+    MOBIUS_EXPECT(output->GetNumberOfPoints() == scaled->GetNumberOfPoints());
+    vtkDataArray* degenerate = output->GetFieldData()->GetArray("DegenerateMap");
+    MOBIUS_EXPECT(degenerate && degenerate->GetTuple1(0) == 0);
+    // The original positions come back exactly.
+    vtkDataArray* surface = output->GetPointData()->GetArray("SurfacePoints");
+    vtkDataArray* ids = output->GetPointData()->GetArray("InputPointId");
+    MOBIUS_EXPECT(surface && ids &&
+      surface->GetComponent(7, 1) == scaled->GetPoint(static_cast<vtkIdType>(ids->GetTuple1(7)))[1]);
+  }
+  return failures;
+}
+
 int TestFilterErrors(int, char*[])
 {
   int failures = 0;
@@ -216,5 +253,6 @@ int TestFilterErrors(int, char*[])
   failures += TestExceptionsBecomeErrors();
   failures += TestDuplicateTriangles();
   failures += TestNonOrientable();
+  failures += TestExtremeScales();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
