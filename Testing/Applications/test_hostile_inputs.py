@@ -396,6 +396,23 @@ for fmt in ("off", "obj", "ply-little", "vtp-ascii"):
     name = write(file_name("unreferenced", fmt), bytes_of(fmt, far))
     expect_result(f"unreferenced vertices {fmt}", name, far[0], sources=range(1, len(points) + 1))
 
+# --- 7. Random mutations (fixed seed): bytes changed, inserted, deleted in valid files. ----
+mutator = random.Random(7)
+for fmt in FORMATS:
+    original = bytes_of(fmt, lumpy)
+    for trial in range(5):
+        data = bytearray(original)
+        for _ in range(mutator.choice([1, 3, 10])):
+            at, choice = mutator.randrange(len(data)), mutator.random()
+            if choice < 0.5:
+                data[at] = mutator.randrange(256)
+            elif choice < 0.75:
+                data[at:at] = bytes([mutator.choice(b"0123456789-.e \n")])
+            else:
+                del data[at:at + mutator.randrange(1, 8)]
+        name = write(f"mutated{trial}-{file_name('lumpy', fmt)}", bytes(data))
+        expect_error_or_result(f"{fmt} mutation {trial}", name)
+
 width = max(len(label) for label, _ in outcomes)
 print("\n".join(f"{label:<{width}}  {outcome}" for label, outcome in outcomes))
 harness.finish()
