@@ -27,6 +27,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -195,11 +197,13 @@ int vtkSymmetryDetection::ComputeOutput(
     return this->GetAbortExecute() ? nullptr : result;
   };
 
-  vtkSmartPointer<vtkPolyData> map = input;
+  // The stages run on a copy: the pipeline's input object stays out of the internal pipeline.
+  vtkSmartPointer<vtkPolyData> map = vtkSmartPointer<vtkPolyData>::New();
+  map->ShallowCopy(input);
   if (!IsSphericalMap(input))
   {
     vtkNew<vtkSphericalConformalMap> conformal;
-    conformal->SetInputData(input);
+    conformal->SetInputData(map);
     // Centering between flow steps is centering too: off for the uncentered comparison.
     conformal->SetCenterBetweenSteps(this->Centering);
     if (!(map = run(conformal, "conformal map", 0.0, 0.3)))
