@@ -33,6 +33,7 @@ std::string UsageText()
   const PipelineOptions defaults;
   std::ostringstream text;
   text << "usage: mobius-register [options] SOURCE TARGET -o OUT\n"
+          "       mobius-register [options] --symmetry MESH -o OUT\n"
           "       mobius-register [options]            (demo on CGAL's cow and a deformed copy)\n"
           "\n"
           "Dense correspondence between two closed genus-0 surface meshes by Moebius\n"
@@ -48,6 +49,18 @@ std::string UsageText()
           "                         The demo writes mobius-demo/demo.{vtp,csv,png} by default.\n"
           "  --png FILE             picture: source colored by position, and the source mesh\n"
           "                         placed on the target by the map (needs X; use xvfb-run)\n"
+          "\n"
+          "Symmetry (paper Section 7.3):\n"
+          "  --symmetry MESH        bilateral symmetry of one mesh: its best orientation-\n"
+          "                         reversing self-map. OUT.vtp: the mesh with the symmetric\n"
+          "                         map (TargetCellId, TargetBarycentric, MappedPoints: each\n"
+          "                         vertex's mirror image), Asymmetry per vertex and field data\n"
+          "                         SymmetryDistance (0 symmetric .. 1), MirrorPlaneNormal,\n"
+          "                         candidates; OUT.csv as for two meshes, the mesh against\n"
+          "                         itself. Uses the options below except --transform.\n"
+          "  --no-centering         skip the Moebius centering (and the centering between flow\n"
+          "                         steps): the paper's uncentered comparison; the flow then\n"
+          "                         drifts and may need --allow-poor-maps\n"
           "\n"
           "Conformal map:\n"
           "  --iterations N         maximum flow steps (default "
@@ -130,6 +143,25 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
     else if (option == "--json")
     {
       commandLine.Json = true;
+    }
+    else if (option == "--symmetry")
+    {
+      std::string mesh;
+      if (!value(mesh))
+      {
+        return false;
+      }
+      if (commandLine.Symmetry)
+      {
+        error = "--symmetry takes one mesh and may be given once";
+        return false;
+      }
+      commandLine.Symmetry = true;
+      commandLine.Source = mesh;
+    }
+    else if (option == "--no-centering")
+    {
+      commandLine.Pipeline.Centering = false;
     }
     else if (option == "--no-center-flow")
     {
@@ -264,6 +296,30 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
   if (commandLine.Help || commandLine.Version)
   {
     return true;
+  }
+  if (commandLine.Symmetry)
+  {
+    if (!positional.empty())
+    {
+      error = "--symmetry takes one mesh; no SOURCE TARGET besides it (see --help)";
+      return false;
+    }
+    if (!commandLine.Picture.empty())
+    {
+      error = "--png is not available with --symmetry";
+      return false;
+    }
+    if (commandLine.Output.empty())
+    {
+      error = "no output given: add -o OUT";
+      return false;
+    }
+    return true;
+  }
+  if (!commandLine.Pipeline.Centering)
+  {
+    error = "--no-centering is for --symmetry only";
+    return false;
   }
   if (positional.empty())
   {

@@ -12,6 +12,7 @@ struct CommandLine
   std::string Output;   // path prefix or .vtp file; outputs are <stem>.vtp and <stem>.csv
   std::string Picture;  // --png
   bool Demo = false;    // no input meshes given
+  bool Symmetry = false; // --symmetry MESH: bilateral symmetry of Source
   bool Force = false;
   bool Quiet = false;
   bool Json = false;

@@ -12,11 +12,35 @@
 #include "vtkTriangleFilter.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <system_error>
+
+namespace
+{
+// The installed copy, found relative to the executable so that any install prefix works
+// (and an installed program never depends on the build tree); else the build tree's copy,
+// unpacked at configure time.
+std::string FindDemoMesh()
+{
+  std::error_code failed;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", failed);
+  if (!failed)
+  {
+    const std::filesystem::path installedCopy =
+      executable.parent_path() / MOBIUS_INSTALLED_MESH_DIR / "cow.off";
+    if (std::ifstream(installedCopy))
+    {
+      return installedCopy.lexically_normal().string();
+    }
+  }
+  return std::string(MOBIUS_MESH_DIR) + "/cow.off";
+}
+}
 
 bool MakeDemoMeshes(DemoMeshes& demo, std::string& error)
 {
-  demo.SourcePath = std::string(MOBIUS_MESH_DIR) + "/cow.off";
+  demo.SourcePath = FindDemoMesh();
   if (!std::ifstream(demo.SourcePath))
   {
     error = demo.SourcePath +

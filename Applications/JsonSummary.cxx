@@ -152,3 +152,51 @@ std::string JsonSummary(const std::string& source, const std::string& target,
   json << "\n}\n";
   return json.str();
 }
+
+std::string SymmetryJsonSummary(
+  const std::string& mesh, const PipelineResult& result, const OutputFiles& outputs)
+{
+  vtkPolyData* symmetry = result.Correspondence;
+  std::ostringstream json;
+  json << "{\n  \"mesh\": " << Quoted(mesh)
+       << ",\n  \"symmetry_distance\": " << Number(FieldValue(symmetry, "SymmetryDistance"))
+       << ",\n  \"centered\": " << (FieldValue(symmetry, "SymmetryCentered") == 1 ? "true" : "false")
+       << ",\n  \"reflection\": " << Array(symmetry, "Reflection", 9)
+       << ",\n  \"mirror_plane_normal\": " << Array(symmetry, "MirrorPlaneNormal", 3)
+       << ",\n  \"mirror_plane_twist\": " << Number(FieldValue(symmetry, "MirrorPlaneTwist"))
+       << ",\n  \"mean_asymmetry\": " << Number(FieldValue(symmetry, "MeanAsymmetry"))
+       << ",\n  \"max_asymmetry\": " << Number(FieldValue(symmetry, "MaximumAsymmetry"))
+       << ",\n  \"candidates\": [";
+  vtkFieldData* fields = symmetry->GetFieldData();
+  vtkDataArray* transforms = fields->GetArray("CandidateTransforms");
+  vtkDataArray* scores = fields->GetArray("CandidateScores");
+  vtkDataArray* distances = fields->GetArray("CandidateSymmetryDistances");
+  vtkDataArray* normals = fields->GetArray("CandidateMirrorPlaneNormals");
+  for (vtkIdType c = 0; transforms && scores && distances && normals &&
+       c < transforms->GetNumberOfTuples() && c < distances->GetNumberOfTuples();
+       ++c)
+  {
+    json << (c ? ", " : "") << "{\"symmetry_distance\": " << Number(distances->GetComponent(c, 0))
+         << ", \"score\": " << Number(scores->GetComponent(c, 0)) << ", \"mirror_plane_normal\": ["
+         << Number(normals->GetComponent(c, 0)) << ", " << Number(normals->GetComponent(c, 1))
+         << ", " << Number(normals->GetComponent(c, 2)) << "], \"transform\": [";
+    for (int k = 0; k < 9; ++k)
+    {
+      json << (k ? ", " : "") << Number(transforms->GetComponent(c, k));
+    }
+    json << "]}";
+  }
+  json << "],\n  \"map\": " << MapQuality(result.SourceMap, symmetry)
+       << ",\n  \"refinement\": " << Refinement(symmetry, FieldValue(symmetry, "SymmetryRefined") == 1)
+       << ",\n  \"stages\": [";
+  double total = 0;
+  for (size_t s = 0; s < result.Stages.size(); ++s)
+  {
+    json << (s ? ", " : "") << "{\"name\": " << Quoted(result.Stages[s].Name)
+         << ", \"seconds\": " << Number(result.Stages[s].Seconds) << "}";
+    total += result.Stages[s].Seconds;
+  }
+  json << "],\n  \"total_seconds\": " << Number(total) << ",\n  \"outputs\": {\"mesh\": "
+       << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath) << "}\n}\n";
+  return json.str();
+}

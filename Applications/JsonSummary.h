@@ -14,4 +14,9 @@
 std::string JsonSummary(const std::string& source, const std::string& target,
   const PipelineResult& result, const OutputFiles& outputs, double demoError);
 
+/// The --symmetry summary: symmetry distance, mirror plane, candidate reflections, the
+/// map's quality, the refinement, stages and outputs.
+std::string SymmetryJsonSummary(
+  const std::string& mesh, const PipelineResult& result, const OutputFiles& outputs);
+
 #endif

@@ -5,6 +5,7 @@
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
 #include "vtkSphericalConformalMap.h"
+#include "vtkSymmetryDetection.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
@@ -119,6 +120,36 @@ bool RunStage(vtkPolyDataAlgorithm* filter, const std::string& stage, const std:
   }
   return true;
 }
+
+// The conformal map stage of both jobs; a degenerate map is an error unless AllowPoorMaps.
+bool MapToSphere(vtkPolyData* mesh, const std::string& name, const std::string& stage,
+  const PipelineOptions& options, const StageProgress& progress, PipelineResult& result,
+  vtkSmartPointer<vtkPolyData>& map, std::string& error)
+{
+  vtkNew<vtkSphericalConformalMap> conformal;
+  conformal->SetInputData(mesh);
+  conformal->SetMaximumNumberOfIterations(options.FlowIterations);
+  conformal->SetConvergenceTolerance(options.FlowTolerance);
+  conformal->SetCenterBetweenSteps(options.CenterBetweenSteps);
+  conformal->SetFillHoles(options.FillHoles);
+  conformal->SetKeepLargestComponent(options.KeepLargestComponent);
+  if (!RunStage(conformal, stage, name, progress, result, map, error))
+  {
+    return false;
+  }
+  // A degenerate map still has the right shape and would go through every later stage: a
+  // wrong correspondence would be written as if it were a result.
+  if (!options.AllowPoorMaps && FieldValue(map, "DegenerateMap") == 1)
+  {
+    auto reason =
+      vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
+    error = name + ": the conformal map is degenerate: " +
+      (reason && reason->GetNumberOfValues() > 0 ? reason->GetValue(0) : std::string("see its field data")) +
+      "; --allow-poor-maps writes the result anyway";
+    return false;
+  }
+  return true;
+}
 }
 
 double FieldValue(vtkPolyData* data, const char* name, int component)
@@ -139,27 +170,9 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   const char* which[2] = { "source", "target" };
   for (int k = 0; k < 2; ++k)
   {
-    vtkNew<vtkSphericalConformalMap> map;
-    map->SetInputData(inputs[k]);
-    map->SetMaximumNumberOfIterations(options.FlowIterations);
-    map->SetConvergenceTolerance(options.FlowTolerance);
-    map->SetCenterBetweenSteps(options.CenterBetweenSteps);
-    map->SetFillHoles(options.FillHoles);
-    map->SetKeepLargestComponent(options.KeepLargestComponent);
-    if (!RunStage(map, std::string("conformal map (") + which[k] + ")", names[k], progress,
-          result, *maps[k], error))
+    if (!MapToSphere(inputs[k], names[k], std::string("conformal map (") + which[k] + ")",
+          options, progress, result, *maps[k], error))
     {
-      return false;
-    }
-    // A degenerate map still has the right shape and would go through every later stage: a
-    // wrong correspondence would be written as if it were a result.
-    if (!options.AllowPoorMaps && FieldValue(*maps[k], "DegenerateMap") == 1)
-    {
-      auto reason =
-        vtkStringArray::SafeDownCast((*maps[k])->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
-      error = names[k] + ": the conformal map is degenerate: " +
-        (reason && reason->GetNumberOfValues() > 0 ? reason->GetValue(0) : std::string("see its field data")) +
-        "; --allow-poor-maps writes the result anyway";
       return false;
     }
     vtkNew<vtkMobiusCenter> center;
@@ -218,4 +231,44 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), options.BasisSize));
   return RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress, result,
     result.Correspondence, error);
+}
+
+bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
+  const PipelineOptions& options, PipelineResult& result, std::string& error,
+  const StageProgress& progress)
+{
+  // The uncentered comparison leaves out the centering between flow steps too.
+  PipelineOptions mapOptions = options;
+  mapOptions.CenterBetweenSteps = options.CenterBetweenSteps && options.Centering;
+  if (!MapToSphere(mesh, name, "conformal map", mapOptions, progress, result, result.SourceMap, error))
+  {
+    return false;
+  }
+  if (options.Refine && result.SourceMap->GetNumberOfPoints() < 2 * static_cast<vtkIdType>(options.BasisSize))
+  {
+    result.Warnings.push_back(name + ": refinement skipped: the map has " +
+      std::to_string(result.SourceMap->GetNumberOfPoints()) +
+      " vertices, fewer than twice the basis size " + std::to_string(options.BasisSize) +
+      " (--basis-size); the symmetric map is the Moebius map");
+  }
+  vtkNew<vtkSymmetryDetection> detection;
+  detection->SetInputData(result.SourceMap);
+  detection->SetCentering(options.Centering);
+  detection->SetResolution(options.Resolution);
+  detection->SetSmoothingTime(options.SmoothingTime);
+  detection->SetNumberOfCandidates(options.NumberOfCandidates);
+  detection->SetRefine(options.Refine);
+  detection->SetBasisSize(options.BasisSize);
+  const size_t warnings = result.Warnings.size();
+  if (!RunStage(detection, "symmetry detection", name, progress, result, result.Correspondence, error))
+  {
+    return false;
+  }
+  // The filter's own "refinement skipped" warning repeats the one above.
+  result.Warnings.erase(std::remove_if(result.Warnings.begin() + warnings, result.Warnings.end(),
+                          [](const std::string& warning) {
+                            return warning.find("Refinement skipped") != std::string::npos;
+                          }),
+    result.Warnings.end());
+  return true;
 }

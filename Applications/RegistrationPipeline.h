@@ -24,6 +24,7 @@ struct PipelineOptions
   bool AllowPoorMaps = false;
   // vtkMobiusCenter
   double CenteringTolerance = 1e-10;
+  bool Centering = true; // symmetry detection only: false for the uncentered comparison
   // vtkSO3Register
   int Resolution = 256;
   double SmoothingTime = 5e-4;
@@ -60,6 +61,12 @@ using StageProgress = std::function<void(const std::string& stage, double fracti
 bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string& sourceName,
   const std::string& targetName, const PipelineOptions& options, PipelineResult& result,
   std::string& error, const StageProgress& progress = {});
+
+/// Bilateral symmetry of one mesh (vtkSymmetryDetection on its conformal map): the map in
+/// result.SourceMap, the symmetric map and the measures in result.Correspondence.
+bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
+  const PipelineOptions& options, PipelineResult& result, std::string& error,
+  const StageProgress& progress = {});
 
 /// Value of component `component` of field-data array `name`, NaN if absent.
 double FieldValue(vtkPolyData* data, const char* name, int component = 0);

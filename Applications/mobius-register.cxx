@@ -100,6 +100,80 @@ double RotationAngleDegrees(vtkPolyData* aligned)
   return std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / 3.14159265358979323846;
 }
 
+// Warnings, then the per-stage seconds and their total, on standard error.
+void PrintWarningsAndTimes(const std::vector<std::string>& warnings, const PipelineResult& result)
+{
+  for (const auto& warning : warnings)
+  {
+    std::cerr << Program << ": warning: " << warning << "\n";
+  }
+  double total = 0;
+  for (const auto& stage : result.Stages)
+  {
+    std::fprintf(stderr, "  %-28s %8.3f s\n", stage.Name.c_str(), stage.Seconds);
+    total += stage.Seconds;
+  }
+  std::fprintf(stderr, "  %-28s %8.3f s\n", "total", total);
+}
+
+// Everything VTK said since the last call, as warnings.
+void CollectVTKMessages(std::vector<std::string>& warnings)
+{
+  for (const auto& message : TakeVTKMessages())
+  {
+    warnings.push_back("VTK: " + message);
+  }
+}
+
+// --symmetry MESH: the mesh's symmetric map and symmetry measures.
+int RunSymmetry(const CommandLine& commandLine)
+{
+  std::string error;
+  OutputFiles outputs;
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!outputs.Plan(commandLine.Output, "", commandLine.Force, { commandLine.Source }, error) ||
+    !ReadMesh(commandLine.Source, mesh, error))
+  {
+    return Fail(error);
+  }
+  std::vector<std::string> warnings;
+  CollectVTKMessages(warnings);
+  const bool verbose = !commandLine.Quiet;
+  PipelineResult result;
+  if (!RunSymmetryDetection(mesh, commandLine.Source, commandLine.Pipeline, result, error,
+        TerminalProgress(verbose && isatty(STDERR_FILENO))))
+  {
+    return Fail(error);
+  }
+  if (!outputs.WriteMesh(result.Correspondence, error) ||
+    !outputs.WriteCsv(result.Correspondence, error) || !outputs.Commit(error))
+  {
+    return Fail(error);
+  }
+  CollectVTKMessages(warnings);
+  warnings.insert(warnings.end(), result.Warnings.begin(), result.Warnings.end());
+  if (verbose)
+  {
+    PrintWarningsAndTimes(warnings, result);
+  }
+  if (commandLine.Json)
+  {
+    std::cout << SymmetryJsonSummary(commandLine.Source, result, outputs);
+  }
+  else if (verbose)
+  {
+    vtkPolyData* symmetry = result.Correspondence;
+    std::cout << "Symmetry of " << commandLine.Source << ": distance "
+              << FieldValue(symmetry, "SymmetryDistance") << " (0 symmetric .. 1), mirror plane normal ("
+              << FieldValue(symmetry, "MirrorPlaneNormal", 0) << ", "
+              << FieldValue(symmetry, "MirrorPlaneNormal", 1) << ", "
+              << FieldValue(symmetry, "MirrorPlaneNormal", 2) << ") on the sphere, mean asymmetry "
+              << FieldValue(symmetry, "MeanAsymmetry") << " of sqrt(area).\n"
+              << "Wrote " << outputs.MeshPath << ", " << outputs.CsvPath << ".\n";
+  }
+  return 0;
+}
+
 int Run(int argc, char* argv[]);
 }
 
@@ -143,6 +217,10 @@ int Run(int argc, char* argv[])
               << ")\n";
     return 0;
   }
+  if (commandLine.Symmetry)
+  {
+    return RunSymmetry(commandLine);
+  }
 
   vtkSmartPointer<vtkPolyData> source, target;
   std::string sourceName = commandLine.Source, targetName = commandLine.Target;
@@ -179,10 +257,7 @@ int Run(int argc, char* argv[])
     return Fail(error);
   }
   std::vector<std::string> warnings;
-  for (const auto& message : TakeVTKMessages())
-  {
-    warnings.push_back("VTK: " + message);
-  }
+  CollectVTKMessages(warnings);
 
   const bool verbose = !commandLine.Quiet;
   PipelineResult result;
@@ -200,24 +275,11 @@ int Run(int argc, char* argv[])
 
   const double demoError =
     commandLine.Demo ? DemoMeanError(result.Correspondence, target) : std::nan("");
-  for (const auto& message : TakeVTKMessages())
-  {
-    warnings.push_back("VTK: " + message);
-  }
+  CollectVTKMessages(warnings);
   warnings.insert(warnings.end(), result.Warnings.begin(), result.Warnings.end());
   if (verbose)
   {
-    for (const auto& warning : warnings)
-    {
-      std::cerr << Program << ": warning: " << warning << "\n";
-    }
-    double total = 0;
-    for (const auto& stage : result.Stages)
-    {
-      std::fprintf(stderr, "  %-28s %8.3f s\n", stage.Name.c_str(), stage.Seconds);
-      total += stage.Seconds;
-    }
-    std::fprintf(stderr, "  %-28s %8.3f s\n", "total", total);
+    PrintWarningsAndTimes(warnings, result);
   }
   if (commandLine.Json)
   {

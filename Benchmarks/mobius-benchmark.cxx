@@ -218,13 +218,17 @@ std::vector<int> ParseList(const std::string& text)
   return values;
 }
 
-int Usage()
+// --help prints to standard output and succeeds (the man page is made from it); a usage
+// error prints the same text to standard error and exits 2.
+int Usage(std::ostream& out, int status)
 {
-  std::cerr << "usage: mobius-benchmark [--repeat N] [--resolutions 128,256,512]\n"
-               "                        [--stages map,grid,register,correspond,refine] MESH [MESH ...]\n"
-               "Per stage: seconds (median of N runs, default 3), quality figures and peak memory,\n"
-               "as Markdown tables. Meshes: .obj .off .ply .stl .vtp .vtk. Build Release to measure.\n";
-  return 2;
+  out << "usage: mobius-benchmark [--repeat N] [--resolutions 128,256,512]\n"
+         "                        [--stages map,grid,register,correspond,refine] MESH [MESH ...]\n"
+         "       mobius-benchmark --version | -h/--help\n"
+         "\n"
+         "Per stage: seconds (median of N runs, default 3), quality figures and peak memory,\n"
+         "as Markdown tables. Meshes: .obj .off .ply .stl .vtp .vtk. Build Release to measure.\n";
+  return status;
 }
 }
 
@@ -249,9 +253,18 @@ int main(int argc, char* argv[])
     {
       stages = argv[++i];
     }
+    else if (argument == "--help" || argument == "-h")
+    {
+      return Usage(std::cout, 0);
+    }
+    else if (argument == "--version")
+    {
+      std::cout << "mobius-benchmark " << MOBIUS_VERSION << "\n";
+      return 0;
+    }
     else if (argument.rfind("-", 0) == 0)
     {
-      return Usage();
+      return Usage(std::cerr, 2);
     }
     else
     {
@@ -260,7 +273,7 @@ int main(int argc, char* argv[])
   }
   if (meshes.empty())
   {
-    return Usage();
+    return Usage(std::cerr, 2);
   }
   auto wants = [&stages](const char* stage) { return stages.find(stage) != std::string::npos; };
 

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <future>
 #include <sstream>
 
@@ -52,6 +53,17 @@ std::string ExtractMapInput(vtkPolyData* input, int basisSize, MapInput& map)
   if (error.empty())
   {
     error = mobius::vtk::ExtractSurfacePoints(input, map.Surface);
+  }
+  if (error.empty() && map.Surface.size() > 0)
+  {
+    // The surface only feeds the spectral surface (a unit-area Laplace-Beltrami basis,
+    // samples), which does not depend on its scale; but lengths enter it squared twice, and
+    // coordinates of 1e-100 or 1e100 underflow or overflow. A power of two scales exactly.
+    const double largest = map.Surface.cwiseAbs().maxCoeff();
+    if (largest > 0.0)
+    {
+      map.Surface *= std::ldexp(1.0, -std::ilogb(largest));
+    }
   }
   if (error.empty() && map.Sphere.rows() < 2 * basisSize)
   {

@@ -122,7 +122,10 @@ public:
         real = std::strtod(token.c_str(), &end);
         integer = 0;
       }
-      this->Malformed = end == token.c_str() || *end != '\0' || errno == ERANGE;
+      // A float out of range is infinite (or, below the smallest, zero), reported by the
+      // NaN check as such; an integer out of range cannot be represented at all.
+      this->Malformed =
+        end == token.c_str() || *end != '\0' || (errno == ERANGE && type.IsInteger);
       return !this->Malformed;
     }
     unsigned char bytes[8];
@@ -253,12 +256,62 @@ std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element
 }
 }
 
+namespace
+{
+// What VTK 9.2's PLY reader needs of the header, or it crashes: a vertex element with
+// scalar x, y and z (without them it reports "Cannot read geometry", closes the file and
+// then reads it); a face element, if any, after the vertices and with its vertex_indices (or
+// vertex_index) list.
+std::string CheckPLYLayout(const std::vector<Element>& elements)
+{
+  const auto find = [&elements](const std::string& name) {
+    return std::find_if(elements.begin(), elements.end(),
+      [&name](const Element& element) { return element.Name == name; });
+  };
+  const auto hasProperty = [](const Element& element, const std::string& name, bool list) {
+    return std::any_of(element.Properties.begin(), element.Properties.end(),
+      [&](const Property& property) { return property.Name == name && property.IsList == list; });
+  };
+  const auto vertex = find("vertex");
+  if (vertex == elements.end())
+  {
+    return "the PLY header has no 'vertex' element";
+  }
+  for (const char* coordinate : { "x", "y", "z" })
+  {
+    if (!hasProperty(*vertex, coordinate, false))
+    {
+      return std::string("the PLY vertex element has no scalar property '") + coordinate + "'";
+    }
+  }
+  const auto face = find("face");
+  if (face != elements.end())
+  {
+    if (face < vertex)
+    {
+      return "the PLY face element comes before the vertex element, which VTK's PLY reader "
+             "cannot read; list the vertices first";
+    }
+    if (!hasProperty(*face, "vertex_indices", true) && !hasProperty(*face, "vertex_index", true))
+    {
+      return "the PLY face element has no list property 'vertex_indices'";
+    }
+  }
+  return {};
+}
+}
+
 std::string CheckPLYFile(const std::string& fileName)
 {
   std::ifstream in(fileName, std::ios::binary);
   Encoding encoding = Encoding::Ascii;
   std::vector<Element> elements;
   std::string error = ReadHeader(in, encoding, elements);
+  if (!error.empty())
+  {
+    return error;
+  }
+  error = CheckPLYLayout(elements);
   if (!error.empty())
   {
     return error;
@@ -302,7 +355,8 @@ std::string CheckPLYFile(const std::string& fileName)
       return "the face element has no list property 'vertex_indices'";
     }
   }
-  // Faces may come before the vertices; their largest index is checked at the end.
+  // CheckPLYLayout puts the vertices before the faces; the largest index is checked again at
+  // the end all the same.
   long long largestIndex = -1, largestIndexFace = -1;
   ValueReader reader(in, encoding);
   for (const auto& element : elements)
@@ -392,6 +446,21 @@ std::string CheckPLYFile(const std::string& fileName)
     return message.str();
   }
   return {};
+}
+
+bool PLYNeedsFinalLineBreak(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  Encoding encoding = Encoding::Ascii;
+  std::vector<Element> elements;
+  if (!ReadHeader(in, encoding, elements).empty() || encoding != Encoding::Ascii)
+  {
+    return false;
+  }
+  in.clear();
+  in.seekg(-1, std::ios::end);
+  char last = '\n';
+  return in.get(last) && last != '\n';
 }
 
 namespace
@@ -554,6 +623,181 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
   return {};
 }
 
+namespace
+{
+// The POINTS section from the stream's position on: `count` points of `type`.
+std::string CheckLegacyPointsSection(
+  std::istream& in, bool ascii, long long count, const std::string& type)
+{
+  const auto missing = [count](long long values) {
+    std::ostringstream message;
+    message << "the file ends inside the POINTS section, before point " << values / 3 << " of "
+            << count;
+    return message.str();
+  };
+  if (!ascii)
+  {
+    // VTK's reader reads what there is and passes the mesh on without its cells.
+    const ScalarType scalar = ParseScalarType(type == "unsigned_char" ? "uchar"
+        : type == "unsigned_short"                                    ? "ushort"
+        : type == "unsigned_int"                                      ? "uint"
+                                                                      : type);
+    const long long start = static_cast<long long>(in.tellg());
+    in.seekg(0, std::ios::end);
+    const long long bytes = static_cast<long long>(in.tellg()) - start;
+    if (scalar.Size == 0)
+    {
+      return {}; // a type VTK may know and we do not: its reader decides
+    }
+    if (bytes / scalar.Size < 3 * count)
+    {
+      return missing(bytes / scalar.Size);
+    }
+    in.seekg(start + 3 * count * scalar.Size);
+    return {};
+  }
+  std::string token;
+  long long value = 0;
+  for (; value < 3 * count && (in >> token); ++value)
+  {
+    char* end = nullptr;
+    const double coordinate = std::strtod(token.c_str(), &end);
+    if (*end != '\0')
+    {
+      break; // a keyword: the section is short
+    }
+    if (!std::isfinite(coordinate))
+    {
+      std::ostringstream message;
+      message << "point " << value / 3 << " has a NaN or infinite coordinate '" << token << "'";
+      return message.str();
+    }
+  }
+  return value < 3 * count ? missing(value) : std::string();
+}
+
+// One integer of a legacy cell section: a token in ASCII, a big-endian int32 in binary.
+bool ReadLegacyInteger(std::istream& in, bool ascii, long long& value)
+{
+  if (ascii)
+  {
+    std::string token;
+    if (!(in >> token))
+    {
+      return false;
+    }
+    errno = 0;
+    char* end = nullptr;
+    value = std::strtoll(token.c_str(), &end, 10);
+    return *end == '\0' && errno != ERANGE;
+  }
+  unsigned char bytes[4];
+  if (!in.read(reinterpret_cast<char*>(bytes), 4))
+  {
+    return false;
+  }
+  value = static_cast<std::int32_t>((static_cast<std::uint32_t>(bytes[0]) << 24) |
+    (static_cast<std::uint32_t>(bytes[1]) << 16) | (static_cast<std::uint32_t>(bytes[2]) << 8) |
+    static_cast<std::uint32_t>(bytes[3]));
+  return true;
+}
+
+// A cell section of the classic layout ("POLYGONS cells size", then per cell its point
+// count and points, `size` values in all). VTK's reader walks the counts without checking
+// them against the size: a count past the end reads beyond its buffer.
+std::string CheckLegacyCellSection(
+  std::istream& in, bool ascii, const std::string& keyword, long long cells, long long size)
+{
+  std::string name = keyword;
+  std::transform(name.begin(), name.end(), name.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  long long used = 0;
+  for (long long cell = 0; cell < cells; ++cell)
+  {
+    long long count = 0;
+    std::ostringstream message;
+    message << "the " << keyword << " section: ";
+    if (!ReadLegacyInteger(in, ascii, count))
+    {
+      message << "cell " << cell << " of " << cells << " is missing or malformed";
+      return message.str();
+    }
+    if (count < 0 || count > size - used - 1)
+    {
+      message << "cell " << cell << " claims " << count << " points, more than the "
+              << size << " values the section declares leave room for";
+      return message.str();
+    }
+    for (long long k = 0; k < count; ++k)
+    {
+      long long index = 0;
+      if (!ReadLegacyInteger(in, ascii, index))
+      {
+        message << "cell " << cell << " of " << cells << " is cut short or malformed";
+        return message.str();
+      }
+    }
+    used += 1 + count;
+  }
+  if (used != size)
+  {
+    std::ostringstream message;
+    message << "the " << keyword << " section declares " << size << " values, but its " << cells
+            << " " << name << " hold " << used;
+    return message.str();
+  }
+  return {};
+}
+}
+
+std::string CheckLegacySections(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  std::string line;
+  // The third line of a legacy file says ASCII or BINARY.
+  for (int number = 1; number <= 3; ++number)
+  {
+    if (!std::getline(in, line))
+    {
+      return {};
+    }
+  }
+  const bool ascii = line.compare(0, 5, "ASCII") == 0;
+  // CheckVTKFileSizes has bounded the counts by the file's size.
+  while (std::getline(in, line))
+  {
+    std::istringstream fields(line);
+    std::string keyword, type;
+    long long first = -1, second = -1;
+    fields >> keyword;
+    std::string error;
+    if (keyword == "POINTS" && (fields >> first >> type) && first >= 0)
+    {
+      error = CheckLegacyPointsSection(in, ascii, first, type);
+    }
+    else if ((keyword == "POLYGONS" || keyword == "VERTICES" || keyword == "LINES" ||
+               keyword == "TRIANGLE_STRIPS") &&
+      (fields >> first >> second) && first >= 0 && second >= 0)
+    {
+      // Files of version 5 list OFFSETS and CONNECTIVITY arrays instead.
+      const auto start = in.tellg();
+      std::string next;
+      const bool offsets = (in >> next) && next == "OFFSETS";
+      in.clear();
+      in.seekg(start);
+      if (!offsets)
+      {
+        error = CheckLegacyCellSection(in, ascii, keyword, first, second);
+      }
+    }
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
+  return {};
+}
+
 std::string CheckSTLFile(const std::string& fileName)
 {
   const long long size = FileSize(fileName);
@@ -576,6 +820,10 @@ std::string CheckSTLFile(const std::string& fileName)
   const auto byte = [&head](int k) { return static_cast<unsigned char>(head[k]); };
   const long long claimed = static_cast<long long>(byte(80)) | (static_cast<long long>(byte(81)) << 8) |
     (static_cast<long long>(byte(82)) << 16) | (static_cast<long long>(byte(83)) << 24);
+  if (claimed == 0)
+  {
+    return "the binary STL header says the file holds no triangles";
+  }
   const long long room = (size - 84) / 50;
   if (claimed > room)
   {

@@ -25,6 +25,10 @@ namespace vtk
 /// index outside [0, number of vertices).
 std::string CheckPLYFile(const std::string& fileName);
 
+/// True for an ASCII PLY file whose last line has no line break: VTK 9.2's PLY reader hits
+/// the end of the file inside that line and fails an assertion (which ends the program).
+bool PLYNeedsFinalLineBreak(const std::string& fileName);
+
 /// Fails when the counts in a legacy .vtk file's section headers (POINTS, POLYGONS,
 /// VERTICES, LINES, TRIANGLE_STRIPS, POINT_DATA, CELL_DATA) or a .vtp file's Piece
 /// attributes (NumberOfPoints, NumberOfPolys, ...) claim more values than a file of its
@@ -32,6 +36,16 @@ std::string CheckPLYFile(const std::string& fileName);
 /// a few bytes claiming 2e9 points would otherwise make them ask for tens of gigabytes
 /// (and, when that fails, write through a null array).
 std::string CheckVTKFileSizes(const std::string& fileName, bool xml);
+
+/// Fails when the POINTS section of a legacy .vtk file holds fewer values than it claims
+/// (VTK's reader then passes on a mesh without its cells, and the error would be "no
+/// triangles"), or, in an ASCII file, a coordinate is NaN, infinite or too large for a
+/// double (VTK's reader stops at it with "Unrecognized keyword: nan"); or when a cell section
+/// (POLYGONS, ...) of the classic layout has a cell whose point count runs past the
+/// section's declared size, or counts that do not add up to it (VTK's reader walks the
+/// counts and reads past its buffer). Call it after CheckVTKFileSizes, which bounds the
+/// counts by the file's size.
+std::string CheckLegacySections(const std::string& fileName);
 
 /// Fails when a binary STL file's triangle count claims more 50-byte triangles than the file
 /// holds: VTK's STL reader allocates the claim (2e9 triangles end the program in

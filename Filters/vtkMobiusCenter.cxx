@@ -83,8 +83,8 @@ int vtkMobiusCenter::ComputeOutput(
     }
     mobius::GeneralizedCenteringParameters generalParameters;
     generalParameters.Degree = this->Degree;
-    generalParameters.Tolerance = this->Tolerance;
-    generalParameters.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
+    generalParameters.Tolerance = this->GeneralizedTolerance;
+    generalParameters.MaximumNumberOfIterations = this->GeneralizedMaximumNumberOfIterations;
     if (!mobius::CenterWithSphericalHarmonics(
           points, triangles, areas, generalParameters, generalized, progress))
     {
@@ -99,9 +99,12 @@ int vtkMobiusCenter::ComputeOutput(
   }
   if (!result.Converged)
   {
-    vtkWarningMacro(<< "Centering stopped after " << result.NumberOfIterations
+    const bool generalizedRun = this->Degree > 1;
+    vtkWarningMacro(<< (generalizedRun ? "Generalized centering" : "Centering") << " stopped after "
+                    << (generalizedRun ? generalized.NumberOfIterations : result.NumberOfIterations)
                     << " iterations with |mu| = " << result.CenterOfMassNorm
-                    << " above the tolerance " << this->Tolerance << ".");
+                    << " above the tolerance "
+                    << (generalizedRun ? this->GeneralizedTolerance : this->Tolerance) << ".");
   }
 
   output->ShallowCopy(input);
@@ -146,4 +149,7 @@ void vtkMobiusCenter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "Degree: " << this->Degree << "\n";
+  os << indent << "GeneralizedTolerance: " << this->GeneralizedTolerance << "\n";
+  os << indent << "GeneralizedMaximumNumberOfIterations: "
+     << this->GeneralizedMaximumNumberOfIterations << "\n";
 }

@@ -86,6 +86,20 @@ public:
   vtkGetMacro(Degree, int);
   ///@}
 
+  ///@{
+  /**
+   * Generalized centering (Degree > 1) has its own stopping rule, since its advection steps
+   * converge differently from the Möbius inversions: stop when the norm of all moments of
+   * degree 1 to Degree is at most GeneralizedTolerance (default 1e-10), or after
+   * GeneralizedMaximumNumberOfIterations advection steps (default 200; each step moves no
+   * vertex by more than 0.05 radians, so a strongly off-center map needs many).
+   */
+  vtkSetClampMacro(GeneralizedTolerance, double, 0.0, 1.0);
+  vtkGetMacro(GeneralizedTolerance, double);
+  vtkSetClampMacro(GeneralizedMaximumNumberOfIterations, int, 1, VTK_INT_MAX);
+  vtkGetMacro(GeneralizedMaximumNumberOfIterations, int);
+  ///@}
+
 protected:
   vtkMobiusCenter();
   ~vtkMobiusCenter() override = default;
@@ -97,6 +111,8 @@ protected:
   double Tolerance = 1e-10;
   int MaximumNumberOfIterations = 100;
   int Degree = 1;
+  double GeneralizedTolerance = 1e-10;
+  int GeneralizedMaximumNumberOfIterations = 200;
 
 private:
   vtkMobiusCenter(const vtkMobiusCenter&) = delete;

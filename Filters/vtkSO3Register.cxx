@@ -206,19 +206,22 @@ int vtkSO3Register::ComputeOutput(
   mobius::vtk::SetFieldValues(fieldData, "EulerAngles", result.EulerAngles.data(), 3);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationScore", result.Score);
   mobius::vtk::SetFieldValue(fieldData, "RegistrationError", result.RegistrationError);
+  mobius::vtk::SetFieldValue(fieldData, "CorrelationCoefficient", result.CorrelationCoefficient);
   mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationBandwidth", result.CorrelationBandwidth);
-  std::vector<std::vector<double>> transforms, scores, errors;
+  std::vector<std::vector<double>> transforms, scores, errors, coefficients;
   for (const auto& candidate : result.Candidates)
   {
     const auto values = RowMajor(candidate.Transform);
     transforms.emplace_back(values.begin(), values.end());
     scores.push_back({ candidate.Score });
     errors.push_back({ candidate.RegistrationError });
+    coefficients.push_back({ candidate.CorrelationCoefficient });
   }
   AddTupleArray(fieldData, "CandidateTransforms", 9, transforms);
   AddTupleArray(fieldData, "CandidateScores", 1, scores);
   AddTupleArray(fieldData, "CandidateRegistrationErrors", 1, errors);
+  AddTupleArray(fieldData, "CandidateCorrelationCoefficients", 1, coefficients);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -23,8 +23,11 @@
  *   R = Rz(alpha) Ry(beta) Rz(gamma); T = R for rotations, T = -R for reflections);
  * - `CorrelationScore` C(T) and `RegistrationError` (|f|^2 + |g|^2 - 2 C(T)) / (|f|^2 + |g|^2),
  *   0 for a perfect match;
- * - `CandidateTransforms` (K tuples of 9), `CandidateScores`, `CandidateRegistrationErrors`
- *   (K tuples each), best first;
+ * - `CorrelationCoefficient`: the correlation coefficient (Pearson, over the sphere) of
+ *   f(T^-1 x) with g(x), in [-1, 1]; the signals' means and sizes do not count
+ *   (vtkSymmetryDetection's symmetry distance is made of it);
+ * - `CandidateTransforms` (K tuples of 9), `CandidateScores`, `CandidateRegistrationErrors`,
+ *   `CandidateCorrelationCoefficients` (K tuples each), best first;
  * - `Resolution`, `CorrelationBandwidth` (the bands used by the grid search).
  *
  * Errors: an input that is not a spherical map (or has a triangle referring to a point id

@@ -23,6 +23,8 @@
 
 #include <Eigen/Geometry>
 
+#include <cfloat>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -237,6 +239,14 @@ int vtkSphericalConformalMap::ComputeOutput(
     vtkErrorMacro(<< "Cannot map the mesh to the sphere: " << error << ".");
     return 0;
   }
+  // The geometry squares lengths twice (areas as norms of cross products, cotangent
+  // weights): coordinates beyond about 1e75 or below 1e-75 overflow or underflow double
+  // precision (a mesh at 1e-100 had "320 zero-area triangles", one at 1e100 "no area").
+  // Scaling by a power of two is exact, so everything runs on coordinates of order 1 and
+  // the outputs are scaled back exactly.
+  const double largestCoordinate = points.size() > 0 ? points.cwiseAbs().maxCoeff() : 0.0;
+  const int scaleExponent = largestCoordinate > 0.0 ? std::ilogb(largestCoordinate) : 0;
+  points *= std::ldexp(1.0, -scaleExponent);
 
   // Repairs that change nothing a user could want kept: merge exact duplicates, drop
   // unused points, orient consistently. FillHoles and KeepLargestComponent on request.
@@ -262,12 +272,19 @@ int vtkSphericalConformalMap::ComputeOutput(
     filledHoles = mobius::FillHoles(points, triangles, &filled);
     provenance.Apply(filled);
   }
-  mobius::OrientConsistently(triangles);
+  const bool oriented = mobius::OrientConsistently(triangles);
   report = mobius::AnalyzeMeshTopology(points, triangles);
   if (!report.IsTopologicalSphere())
   {
     std::ostringstream message;
     message << "Cannot map the mesh to the sphere: " << mobius::DescribeTopologyProblems(report);
+    // Edges left disagreeing where no edge is non-manifold: no orientation exists, which
+    // "orientations disagree" alone does not tell (re-orienting the file would not help).
+    if (!oriented && report.NonManifoldEdges == 0 && report.InconsistentlyOrientedEdges > 0)
+    {
+      message << " (no orientation of the triangles agrees on every edge: the surface is not "
+                 "orientable, like a Moebius strip or a Klein bottle)";
+    }
     if (report.BoundaryLoops > 0 && !this->FillHoles)
     {
       message << ". Set FillHoles to close the holes";
@@ -311,7 +328,15 @@ int vtkSphericalConformalMap::ComputeOutput(
   {
     const Eigen::Vector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
                           c = points.row(triangles(t, 2));
-    surfaceAreas[t] = 0.5 * (b - a).cross(c - a).norm();
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    surfaceAreas[t] = std::ldexp(area, 2 * scaleExponent);
+    if (!std::isfinite(surfaceAreas[t]) || !(surfaceAreas[t] >= DBL_MIN))
+    {
+      vtkErrorMacro(<< "Cannot map the mesh to the sphere: its triangles' areas (triangle " << t
+                    << ": 2^" << std::ilogb(area) + 2 * scaleExponent
+                    << ") are beyond what double precision represents; rescale the mesh.");
+      return 0;
+    }
   }
   const mobius::ConformalMapResult result =
     mobius::ComputeSphericalConformalMap(points, triangles, parameters);
@@ -399,9 +424,10 @@ int vtkSphericalConformalMap::ComputeOutput(
   surfacePoints->SetName(mobius::vtk::SurfacePointsArrayName);
   surfacePoints->SetNumberOfComponents(3);
   surfacePoints->SetNumberOfTuples(points.rows());
+  const double restore = std::ldexp(1.0, scaleExponent); // the input's scale, exactly
   for (Eigen::Index i = 0; i < points.rows(); ++i)
   {
-    surfacePoints->SetTuple3(i, points(i, 0), points(i, 1), points(i, 2));
+    surfacePoints->SetTuple3(i, restore * points(i, 0), restore * points(i, 1), restore * points(i, 2));
   }
   output->GetPointData()->AddArray(surfacePoints);
   // Repairs drop, merge and add points: results must still name the input's (the file's)

@@ -18,6 +18,7 @@
 #include "vtkSTLReader.h"
 #include "vtkSmartPointer.h"
 #include "vtkXMLPolyDataReader.h"
+#include "vtkXMLReader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -64,6 +65,26 @@ bool NextDataLine(std::istream& in, std::string& line)
   return false;
 }
 
+// VTK's readers quote what they could not parse ("Unrecognized keyword: <the bytes>"): in a
+// garbage file that is binary, with control characters, escape sequences and line breaks,
+// and it would break the one-line message apart. Keeps printable ASCII, shows the rest as
+// '?' (line breaks as spaces), and cuts the text short.
+std::string PrintableLine(const std::string& text)
+{
+  const size_t longest = 300;
+  std::string printable;
+  for (size_t k = 0; k < text.size() && printable.size() < longest; ++k)
+  {
+    const auto c = static_cast<unsigned char>(text[k]);
+    printable += (c >= 32 && c < 127) ? static_cast<char>(c) : std::isspace(c) ? ' ' : '?';
+  }
+  if (printable.size() < text.size())
+  {
+    printable += "...";
+  }
+  return printable;
+}
+
 // Parses an OFF file: "OFF" (or COFF/NOFF/CNOFF...) header, "V F E", V vertex lines and
 // F face lines "n i_1 ... i_n [color]". Returns an empty string or the reason it failed.
 std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
@@ -96,7 +117,7 @@ std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
   header >> numberOfFaces >> numberOfEdges;
   if (numberOfVertices <= 0 || numberOfFaces < 0)
   {
-    return "invalid vertex or face count";
+    return "invalid vertex or face count in the header line '" + PrintableLine(line) + "'";
   }
   // The counts are allocated before the lines are read: they must be plausible for the
   // file's size, or a header of a few bytes could ask for gigabytes. A vertex line takes at
@@ -119,11 +140,31 @@ std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
   for (long long i = 0; i < numberOfVertices; ++i)
   {
     double p[3];
-    if (!NextDataLine(in, line) || !(std::istringstream(line) >> p[0] >> p[1] >> p[2]))
+    std::string text[3];
+    bool numeric = NextDataLine(in, line);
+    std::istringstream fields(line);
+    for (int k = 0; numeric && k < 3; ++k)
+    {
+      // strtod, not operator>>: it reads "nan", "inf" and overflowing numbers (as infinite),
+      // which must be reported as what they are, not as a malformed line.
+      char* end = nullptr;
+      numeric = static_cast<bool>(fields >> text[k]) &&
+        (p[k] = std::strtod(text[k].c_str(), &end), *end == '\0');
+    }
+    if (!numeric)
     {
       std::ostringstream error;
       error << "vertex " << i << " of " << numberOfVertices << " is missing or malformed";
       return error.str();
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      if (!std::isfinite(p[k]))
+      {
+        std::ostringstream error;
+        error << "vertex " << i << " has a NaN or infinite coordinate '" << text[k] << "'";
+        return error.str();
+      }
     }
     points->SetPoint(i, p);
   }
@@ -133,34 +174,52 @@ std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
   {
     long long n = 0;
     std::istringstream face;
-    if (NextDataLine(in, line))
+    const bool present = NextDataLine(in, line);
+    if (present)
     {
       face.str(line);
       face >> n;
+    }
+    const auto faceError = [&](const std::string& problem) {
+      return "face " + std::to_string(f) + " of " + std::to_string(numberOfFaces) + problem;
+    };
+    if (!present)
+    {
+      return faceError(" is missing: the file ends before it");
     }
     // Each index takes at least two characters of the line: a count larger than that is
     // not allocated (one line "2000000000 0 1 2" would ask for 16 GB).
     if (n > static_cast<long long>(line.size()) / 2)
     {
-      std::ostringstream error;
-      error << "face " << f << " of " << numberOfFaces << " claims " << n
-            << " vertices, but its line lists fewer";
-      return error.str();
+      return faceError(" claims " + std::to_string(n) + " vertices, but its line lists fewer");
     }
-    ids.resize(static_cast<size_t>(std::max(0LL, n)));
-    bool ok = n >= 3;
+    if (n < 3)
+    {
+      return faceError(" has " + std::to_string(n) + " vertices; a face needs at least 3");
+    }
+    ids.resize(static_cast<size_t>(n));
     for (auto& id : ids)
     {
-      long long index = -1;
-      ok = ok && static_cast<bool>(face >> index) && index >= 0 && index < numberOfVertices;
+      // Each index whole, so that "1.5" or a number past 64 bits is named, not misread.
+      std::string token;
+      if (!(face >> token))
+      {
+        return faceError(" lists fewer than the " + std::to_string(n) + " vertex indices it claims");
+      }
+      errno = 0;
+      char* end = nullptr;
+      const long long index = std::strtoll(token.c_str(), &end, 10);
+      if (*end != '\0' || errno == ERANGE)
+      {
+        return faceError(" has an invalid vertex index '" + PrintableLine(token) + "'");
+      }
+      if (index < 0 || index >= numberOfVertices)
+      {
+        return faceError(" refers to vertex " + std::to_string(index) +
+          ", out of range: the file has " + std::to_string(numberOfVertices) +
+          " vertices (numbered from 0)");
+      }
       id = static_cast<vtkIdType>(index);
-    }
-    if (!ok)
-    {
-      std::ostringstream error;
-      error << "face " << f << " of " << numberOfFaces
-            << " is missing, has fewer than 3 vertices or refers to a vertex out of range";
-      return error.str();
     }
     polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   }
@@ -260,7 +319,7 @@ std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
         {
           std::ostringstream error;
           error << "face " << faces << " (line " << lineNumber << ") has an invalid vertex index '"
-                << corner << "'"
+                << PrintableLine(corner) << "'"
                 << (isNumber && index == 0 ? " (OBJ numbers vertices from 1)"
                     : isNumber && index < 0
                     ? " (a negative index counts back from the last vertex defined before it)"
@@ -304,31 +363,15 @@ std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
   return {};
 }
 
-// Runs a VTK reader, turning its error events into our message.
-std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
+// The reason in a VTK error message, without its file, line and object prefixes
+// ("ERROR: In file, line n\nvtkXMLPolyDataReader (0x...): "), as one printable line.
+std::string VTKMessageReason(const std::string& message)
 {
-  std::string error;
-  vtkNew<vtkCallbackCommand> catcher;
-  catcher->SetClientData(&error);
-  catcher->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
-    auto message = static_cast<std::string*>(clientData);
-    if (message->empty() && callData)
-    {
-      *message = static_cast<const char*>(callData);
-    }
-  });
-  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
-  reader->Update();
-  auto result = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (error.empty() && result)
+  std::string reason = message;
+  if (reason.compare(0, 9, "ERROR: In") == 0 && reason.find('\n') != std::string::npos)
   {
-    output->ShallowCopy(result);
+    reason = reason.substr(reason.find('\n') + 1);
   }
-  // VTK's messages carry file, line and object prefixes ("vtkXMLPolyDataReader (0x...): ");
-  // keep the reason.
-  const auto lastBreak = error.find_last_of('\n', error.find_last_not_of("\n "));
-  std::string reason = lastBreak == std::string::npos ? error : error.substr(lastBreak + 1);
   const auto object = reason.find("): ");
   if (reason.compare(0, 3, "vtk") == 0 && object != std::string::npos)
   {
@@ -338,7 +381,50 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
   {
     reason.pop_back();
   }
-  return reason;
+  return PrintableLine(reason);
+}
+
+// An observer keeping the first message it sees in `message`.
+vtkSmartPointer<vtkCallbackCommand> FirstMessageCatcher(std::string* message)
+{
+  auto catcher = vtkSmartPointer<vtkCallbackCommand>::New();
+  catcher->SetClientData(message);
+  catcher->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto first = static_cast<std::string*>(clientData);
+    if (first->empty() && callData)
+    {
+      *first = static_cast<const char*>(callData);
+    }
+  });
+  return catcher;
+}
+
+// Runs a VTK reader, turning its error events into our message.
+std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
+{
+  std::string error;
+  auto catcher = FirstMessageCatcher(&error);
+  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
+  // The XML reader's own message for a file it cannot parse is "Error parsing input file.
+  // ReadXMLInformation aborting.": the parser's (line, column and what is wrong) says more.
+  std::string parserError;
+  auto parserCatcher = FirstMessageCatcher(&parserError);
+  if (auto xml = vtkXMLReader::SafeDownCast(reader))
+  {
+    xml->SetParserErrorObserver(parserCatcher);
+  }
+  reader->Update();
+  auto result = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (error.empty() && result)
+  {
+    output->ShallowCopy(result);
+  }
+  if (!error.empty() && !parserError.empty())
+  {
+    return "the VTK XML file cannot be parsed: " + VTKMessageReason(parserError);
+  }
+  return VTKMessageReason(error);
 }
 }
 
@@ -429,6 +515,16 @@ int vtkSurfaceMeshReader::ComputeOutput(
       error = mobius::vtk::CheckPLYFile(fileName);
       auto ply = vtkSmartPointer<vtkPLYReader>::New();
       ply->SetFileName(fileName.c_str());
+      if (error.empty() && mobius::vtk::PLYNeedsFinalLineBreak(fileName))
+      {
+        // The data is complete (the check read all of it), only the line break is missing:
+        // give the reader the text with one.
+        std::ifstream file(fileName, std::ios::binary);
+        std::ostringstream text;
+        text << file.rdbuf() << '\n';
+        ply->SetInputString(text.str());
+        ply->ReadFromInputStringOn();
+      }
       reader = ply;
     }
     else if (extension == "stl")
@@ -448,6 +544,10 @@ int vtkSurfaceMeshReader::ComputeOutput(
     else if (extension == "vtk")
     {
       error = mobius::vtk::CheckVTKFileSizes(fileName, false);
+      if (error.empty())
+      {
+        error = mobius::vtk::CheckLegacySections(fileName);
+      }
       auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
       legacy->SetFileName(fileName.c_str());
       reader = legacy;
@@ -473,7 +573,8 @@ int vtkSurfaceMeshReader::ComputeOutput(
   }
   if (!error.empty())
   {
-    vtkErrorMacro(<< fileName << ": " << error);
+    // One printable line whatever the file held (a header line quoted from a binary file).
+    vtkErrorMacro(<< fileName << ": " << PrintableLine(error));
     return 0;
   }
   output->ShallowCopy(mesh);

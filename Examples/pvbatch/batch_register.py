@@ -6,7 +6,8 @@ Usage:
         --template TEMPLATE_MESH --output DIR MESH [MESH ...]
 
 Each rank takes every size-th mesh, maps it to the sphere, centers it, registers it to the
-template's centered map and writes DIR/<mesh>-to-template.vtp (the mesh placed on the
+template's centered map, refines the correspondence (Refine Correspondence; --no-refine keeps
+the paper's Möbius-only map) and writes DIR/<mesh>-to-template.vtp (the mesh placed on the
 template surface, with TargetCellId, TargetBarycentric, MappedPoints and the template's
 point arrays). Rank 0 gathers one summary line per mesh into DIR/summary.csv; a mesh that
 cannot be mapped gets its error message there and does not stop the others.
@@ -24,16 +25,26 @@ parser.add_argument("--plugin", required=True, help="path of MobiusRegistration.
 parser.add_argument("--template", required=True, help="the mesh every other one is registered to")
 parser.add_argument("--output", default="batch_output", help="folder for the results")
 parser.add_argument("--resolution", type=int, default=256, help="SO3 Register resolution")
+parser.add_argument("--no-refine", action="store_true",
+                    help="keep the Möbius map (Dense Correspondence) instead of refining it")
 parser.add_argument("--max-failures", type=int, default=0,
                     help="exit with status 1 when more meshes than this fail (default 0)")
 parser.add_argument("meshes", nargs="+")
 args = parser.parse_args()
 
-# The filters' Python package sits beside the plugin in the build tree:
-# lib/paraview-5.11/plugins/MobiusRegistration/ -> lib/python3/dist-packages.
-sys.path.insert(0, os.path.normpath(os.path.join(os.path.dirname(args.plugin), "../../../python3/dist-packages")))
+# The filters' Python package sits beside the plugin: from <libdir>/paraview-5.11/plugins/
+# MobiusRegistration/ up to the folder holding python3/dist-packages (lib/, also when the
+# libdir is lib/x86_64-linux-gnu). Installed under /usr it is importable anyway.
+folder = os.path.dirname(os.path.abspath(args.plugin))
+for _ in range(5):
+    folder = os.path.dirname(folder)
+    candidate = os.path.join(folder, "python3", "dist-packages")
+    if os.path.isdir(os.path.join(candidate, "mobiusregistration")):
+        sys.path.insert(0, candidate)
+        break
 from mobiusregistration import (  # noqa: E402
-    vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register, vtkSphericalConformalMap, vtkSurfaceMeshReader)
+    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register, vtkSphericalConformalMap,
+    vtkSurfaceMeshReader)
 from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
@@ -101,7 +112,8 @@ for path in args.meshes[rank::size]:
     registration.SetSourceData(source)
     registration.SetTargetData(template)
     registration.SetResolution(args.resolution)
-    correspondence = errors.watch(vtkDenseCorrespondence())
+    # The refinement needs at least twice its basis size (80) of vertices on each surface.
+    correspondence = errors.watch(vtkDenseCorrespondence() if args.no_refine else vtkCorrespondenceRefinement())
     correspondence.SetSourceConnection(registration.GetOutputPort())
     correspondence.SetTargetData(template)
     writer = vtkXMLPolyDataWriter()

@@ -5,37 +5,17 @@ import itertools
 import json
 import math
 import os
-import resource
 import shutil
 import struct
-import subprocess
 import sys
+
+from cli_harness import Harness
 
 program, mesh_dir, work = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
-
-
-def run(*arguments, env=None, cwd=work, timeout=600, memory=None):
-    """Exit code, standard output and error; a run that hangs is killed and counts as code None.
-    `memory`: a limit on the program's address space, in bytes."""
-    def limit():
-        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
-    try:
-        result = subprocess.run([program, *arguments], cwd=cwd, env=env, capture_output=True,
-                                text=True, errors="replace", timeout=timeout,
-                                preexec_fn=limit if memory else None)
-    except subprocess.TimeoutExpired:
-        return None, "", f"timed out after {timeout} s"
-    return result.returncode, result.stdout, result.stderr
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAILED:", message)
-
+harness = Harness(program, work)
+run, check, expect_failure = harness.run, harness.check, harness.expect_failure
 
 # --help and --version
 code, out, _ = run("--help")
@@ -86,19 +66,6 @@ if code == 0:
     check(json.loads(out)["registration_error"] < 1e-3, "hand self registration error")
     check(os.path.exists(os.path.join(work, "hand.vtp")) and os.path.exists(os.path.join(work, "hand.csv")),
           "hand outputs")
-
-
-def expect_failure(arguments, words, outputs, env=None, code_expected=1, timeout=600):
-    code, _, err = run(*arguments, env=env, timeout=timeout)
-    lines = err.strip().splitlines()
-    check(code == code_expected, f"{arguments}: exit code {code}, expected {code_expected}")
-    check(len(lines) == 1 and all(w in err for w in words), f"{arguments}: message {err!r} lacks {words}")
-    # The program's own line, never VTK's log format (colours, timestamps, file and line).
-    check("\x1b" not in err and "ERROR: In" not in err and "(0x" not in err,
-          f"{arguments}: VTK's log format in {err!r}")
-    for output in outputs:
-        leftovers = [f for f in os.listdir(work) if f.startswith(output)]
-        check(not leftovers, f"{arguments}: left {leftovers}")
 
 
 missing = os.path.join(work, "no-such-mesh.off")
@@ -407,5 +374,4 @@ write_off(os.path.join(work, "hand-hole.off"), points, holed)
 expect_numbering(correspondence("hand-hole.off", hand, "--fill-holes"), [-1, *range(n)], lambda s: s,
                  "--fill-holes", fraction=0.95)
 
-print(f"{len(failures)} failed")
-sys.exit(1 if failures else 0)
+harness.finish()

@@ -253,6 +253,34 @@ void TestBadValues()
 }
 }
 
+// A face listed again, either way round, is a duplicate (and its edges non-manifold); so is
+// the two-triangle "pillow" FillHoles makes of a single triangle.
+void TestDuplicateTriangles()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(1, p, t);
+  MOBIUS_CHECK(AnalyzeMeshTopology(p, t).DuplicateTriangles == 0);
+  for (const bool reversed : { false, true })
+  {
+    Triangles doubled(t.rows() + 1, 3);
+    doubled.topRows(t.rows()) = t;
+    doubled.row(t.rows()) << t(4, 0), t(4, reversed ? 2 : 1), t(4, reversed ? 1 : 2);
+    const MeshTopologyReport r = AnalyzeMeshTopology(p, doubled);
+    MOBIUS_CHECK(r.DuplicateTriangles == 1 && r.NonManifoldEdges == 3);
+    MOBIUS_CHECK(!r.IsTopologicalSphere());
+    MOBIUS_CHECK(DescribeTopologyProblems(r).find("1 duplicate triangle") != std::string::npos);
+  }
+  Points corners(3, 3);
+  corners << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  Triangles single(1, 3);
+  single << 0, 1, 2;
+  MOBIUS_CHECK(FillHoles(corners, single) == 1);
+  const MeshTopologyReport pillow = AnalyzeMeshTopology(corners, single);
+  MOBIUS_CHECK(pillow.IsClosedManifold() && pillow.DuplicateTriangles == 1);
+  MOBIUS_CHECK(!pillow.IsTopologicalSphere());
+}
+
 int main()
 {
   TestSphereAndTorus();
@@ -261,5 +289,6 @@ int main()
   TestNonManifold();
   TestComponentsAndOrientation();
   TestBadValues();
+  TestDuplicateTriangles();
   return MOBIUS_TEST_RESULT();
 }

@@ -162,6 +162,107 @@ int TestExceptionsBecomeErrors()
   failures += ExpectError(correspondence, "observer failed");
   return failures;
 }
+
+// A face listed twice (either way round) is named as a duplicate, not only through the three
+// non-manifold edges it makes; so is the two-triangle "pillow" FillHoles makes of a single
+// triangle, which has no inside to map (its flow's distortion was infinite).
+int TestDuplicateTriangles()
+{
+  int failures = 0;
+  auto mesh = BumpyMesh(2);
+  for (bool reversed : { false, true })
+  {
+    auto doubled = vtkSmartPointer<vtkPolyData>::New();
+    doubled->DeepCopy(mesh);
+    vtkIdType npts;
+    const vtkIdType* ids;
+    doubled->GetPolys()->GetCellAtId(5, npts, ids);
+    const vtkIdType copy[3] = { ids[0], reversed ? ids[2] : ids[1], reversed ? ids[1] : ids[2] };
+    doubled->GetPolys()->InsertNextCell(3, copy);
+    vtkNew<vtkSphericalConformalMap> map;
+    map->SetInputData(doubled);
+    failures += ExpectError(map, "1 duplicate triangle");
+  }
+  vtkNew<vtkPolyData> triangle;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  triangle->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType corners[3] = { 0, 1, 2 };
+  polys->InsertNextCell(3, corners);
+  triangle->SetPolys(polys);
+  vtkNew<vtkSphericalConformalMap> pillow;
+  pillow->SetInputData(triangle);
+  pillow->FillHolesOn();
+  failures += ExpectError(pillow, "1 duplicate triangle");
+  return failures;
+}
+
+// A closed, manifold surface with no orientation (the projective plane in 6 vertices) says so.
+int TestNonOrientable()
+{
+  int failures = 0;
+  vtkNew<vtkPoints> points;
+  const double positions[6][3] = { { 0.1, 0.2, 0.9 }, { 0.8, 0.1, 0.3 }, { 0.4, 0.9, 0.2 },
+    { 0.7, 0.6, 0.9 }, { 0.2, 0.8, 0.6 }, { 0.9, 0.4, 0.5 } };
+  for (const auto& p : positions)
+  {
+    points->InsertNextPoint(p);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType faces[10][3] = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 0, 4, 5 }, { 0, 5, 1 },
+    { 1, 2, 4 }, { 2, 3, 5 }, { 3, 4, 1 }, { 4, 5, 2 }, { 5, 1, 3 } };
+  for (const auto& face : faces)
+  {
+    polys->InsertNextCell(3, face);
+  }
+  vtkNew<vtkPolyData> plane;
+  plane->SetPoints(points);
+  plane->SetPolys(polys);
+  vtkNew<vtkSphericalConformalMap> map;
+  map->SetInputData(plane);
+  failures += ExpectError(map, "the surface is not orientable");
+  return failures;
+}
+}
+
+// Scale does not matter where the areas are double-precision numbers (coordinates of 1e-100
+// had "zero-area triangles", 1e100 "no area"); beyond, the error says so.
+int TestExtremeScales()
+{
+  int failures = 0;
+  auto mesh = BumpyMesh(2);
+  for (const double scale : { 1e-100, 1e100, 1e200 })
+  {
+    auto scaled = vtkSmartPointer<vtkPolyData>::New();
+    scaled->DeepCopy(mesh);
+    for (vtkIdType i = 0; i < scaled->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      mesh->GetPoint(i, p);
+      scaled->GetPoints()->SetPoint(i, scale * p[0], scale * p[1], scale * p[2]);
+    }
+    vtkNew<vtkSphericalConformalMap> map;
+    map->SetInputData(scaled);
+    if (scale > 1e150) // areas of 1e400
+    {
+      failures += ExpectError(map, "beyond what double precision represents");
+      continue;
+    }
+    map->Update();
+    vtkPolyData* output = map->GetOutput();
+    MOBIUS_EXPECT(output->GetNumberOfPoints() == scaled->GetNumberOfPoints());
+    vtkDataArray* degenerate = output->GetFieldData()->GetArray("DegenerateMap");
+    MOBIUS_EXPECT(degenerate && degenerate->GetTuple1(0) == 0);
+    // The original positions come back exactly.
+    vtkDataArray* surface = output->GetPointData()->GetArray("SurfacePoints");
+    vtkDataArray* ids = output->GetPointData()->GetArray("InputPointId");
+    MOBIUS_EXPECT(surface && ids &&
+      surface->GetComponent(7, 1) == scaled->GetPoint(static_cast<vtkIdType>(ids->GetTuple1(7)))[1]);
+  }
+  return failures;
 }
 
 int TestFilterErrors(int, char*[])
@@ -169,5 +270,8 @@ int TestFilterErrors(int, char*[])
   int failures = 0;
   failures += TestOutOfRangeIds();
   failures += TestExceptionsBecomeErrors();
+  failures += TestDuplicateTriangles();
+  failures += TestNonOrientable();
+  failures += TestExtremeScales();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -117,6 +117,48 @@ int TestGeneralizedCentering()
   }
   MOBIUS_EXPECT(mobius::SphericalHarmonicMoments(points, triangles, areas, 3).norm() <= 1e-10);
 
+  // Degrees 4 to 8, with their own tolerance and iteration cap: the moments up to the degree
+  // vanish to that tolerance and no triangle flips (every triangle still faces outward).
+  for (int degree = 4; degree <= 8; ++degree)
+  {
+    vtkNew<vtkMobiusCenter> high;
+    high->SetInputData(map);
+    high->SetDegree(degree);
+    high->SetGeneralizedTolerance(1e-9);
+    high->SetGeneralizedMaximumNumberOfIterations(400);
+    high->Update();
+    vtkPolyData* centered = high->GetOutput();
+    for (vtkIdType i = 0; i < centered->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      centered->GetPoint(i, p);
+      points.row(i) << p[0], p[1], p[2];
+    }
+    int flipped = 0;
+    for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+    {
+      const Eigen::Vector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
+                            c = points.row(triangles(t, 2));
+      flipped += (b - a).cross(c - a).dot(a + b + c) <= 0 ? 1 : 0;
+    }
+    const double moments = mobius::SphericalHarmonicMoments(points, triangles, areas, degree).norm();
+    std::cout << "degree " << degree << ": |mu| " << moments << " after "
+              << mobius_test::FieldValue(centered, "GeneralizedCenteringIterations")
+              << " steps, flipped triangles " << flipped << std::endl;
+    MOBIUS_EXPECT(moments <= 1e-9);
+    MOBIUS_EXPECT(flipped == 0);
+    MOBIUS_EXPECT(mobius_test::FieldValue(centered, "GeneralizedCenteringIterations") <= 400);
+  }
+  // The iteration cap is the generalized one: one step cannot center degree 8.
+  vtkNew<vtkMobiusCenter> capped;
+  mobius_test::MessageCatcher cappedCatcher(capped);
+  capped->SetInputData(map);
+  capped->SetDegree(8);
+  capped->SetGeneralizedMaximumNumberOfIterations(1);
+  capped->Update();
+  MOBIUS_EXPECT(mobius_test::FieldValue(capped->GetOutput(), "GeneralizedCenteringIterations") == 1);
+  MOBIUS_EXPECT(cappedCatcher.Warning.find("Generalized centering stopped after 1") != std::string::npos);
+
   // A point set can only be Möbius-centered.
   vtkNew<vtkPolyData> cloud;
   cloud->SetPoints(map->GetPoints());

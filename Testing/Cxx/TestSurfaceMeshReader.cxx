@@ -255,6 +255,62 @@ int TestObjVertexOrder(const std::string& dir)
   }
   return failures;
 }
+
+// Cases of the hostile-input suite (Testing/Applications/test_hostile_inputs.py) fixed in the
+// reader, which ParaView uses without the command line.
+int TestHostileText(const std::string& dir)
+{
+  int failures = 0;
+  // Complete, but without the last line break: VTK's PLY reader failed an assertion (and
+  // ended the program) at the end of the file.
+  std::string ply = AsciiPly("3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2");
+  WriteText(dir + "/unterminated.ply", ply);
+  failures += ExpectMesh(dir + "/unterminated.ply", 4, 4);
+  // NaN, infinite and overflowing coordinates are named as such (not "malformed", and not
+  // VTK's "Unrecognized keyword: nan").
+  WriteText(dir + "/nan.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 nan 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+  failures += ExpectError(dir + "/nan.off", "vertex 2 has a NaN or infinite coordinate 'nan'");
+  WriteText(dir + "/overflow.ply", AsciiPly("3 0 2 1\n", "0 0 0\n1 0 0\n0 1e999 0\n0 0 1\n"));
+  failures += ExpectError(dir + "/overflow.ply", "vertex 2 has a NaN or infinite coordinate y");
+  WriteText(dir + "/inf.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+                              "0 0 0 1 0 0\n0 -inf 0 0 0 1\nPOLYGONS 1 4\n3 0 1 2\n");
+  failures += ExpectError(dir + "/inf.vtk", "point 2 has a NaN or infinite coordinate '-inf'");
+  // A cell count past the section's declared size: VTK's legacy reader read past its buffer.
+  WriteText(dir + "/long-cell.vtk", "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+                                    "0 0 0 1 0 0 0 1 0 0 0 1\nPOLYGONS 4 16\n3 0 2 1\n3 0 1 3\n3 1 2 3\n9 0 3 2\n");
+  failures += ExpectError(dir + "/long-cell.vtk", "POLYGONS section: cell 3 claims 9 points");
+  // VTK quotes the bytes it could not parse: the message stays one printable line.
+  WriteText(dir + "/binary-garbage.vtk", std::string("\x1b[31m\n\x01\x02garbage\r\nmore\n", 21));
+  {
+    vtkNew<vtkSurfaceMeshReader> reader;
+    mobius_test::MessageCatcher catcher(reader);
+    mobius_test::MessageCatcher executiveCatcher(reader->GetExecutive());
+    reader->SetFileName((dir + "/binary-garbage.vtk").c_str());
+    reader->Update();
+    const std::string reason = catcher.Error.substr(catcher.Error.find("binary-garbage.vtk"));
+    const std::string body = reason.substr(0, reason.find_last_not_of('\n') + 1);
+    MOBIUS_EXPECT(!catcher.Error.empty() && body.find('\n') == std::string::npos &&
+      body.find('\x1b') == std::string::npos && body.find('\x01') == std::string::npos);
+  }
+  // Headers VTK's PLY reader crashed on: no z, no vertex_indices, faces before vertices.
+  const std::string tetra = "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  std::string noZ = AsciiPly(tetra);
+  noZ.replace(noZ.find("property float z"), 16, "property float w");
+  WriteText(dir + "/no-z.ply", noZ);
+  failures += ExpectError(dir + "/no-z.ply", "the PLY vertex element has no scalar property 'z'");
+  std::string noIndices = AsciiPly(tetra);
+  noIndices.replace(noIndices.find("vertex_indices"), 14, "corners");
+  WriteText(dir + "/no-indices.ply", noIndices);
+  failures += ExpectError(dir + "/no-indices.ply", "no list property 'vertex_indices'");
+  WriteText(dir + "/faces-first.ply",
+    "ply\nformat ascii 1.0\nelement face 4\nproperty list uchar int vertex_indices\nelement vertex 4\n"
+    "property float x\nproperty float y\nproperty float z\nend_header\n" + tetra +
+    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  failures += ExpectError(dir + "/faces-first.ply", "face element comes before the vertex element");
+  WriteText(dir + "/empty-binary.stl", std::string(80, 'x') + std::string(4, '\0'));
+  failures += ExpectError(dir + "/empty-binary.stl", "holds no triangles");
+  return failures;
+}
 }
 
 int TestSurfaceMeshReader(int argc, char* argv[])
@@ -333,5 +389,6 @@ int TestSurfaceMeshReader(int argc, char* argv[])
   failures += TestHostileFiles(dir);
   failures += TestHostileSizes(dir);
   failures += TestObjVertexOrder(dir);
+  failures += TestHostileText(dir);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -49,9 +49,12 @@ double TriangleQuasiConformalDistortion(const Eigen::Vector3d& p0, const Eigen::
   const double e = 0.5 * std::hypot(a(0, 0) + a(1, 1), a(1, 0) - a(0, 1));
   const double f = 0.5 * std::hypot(a(0, 0) - a(1, 1), a(1, 0) + a(0, 1));
   const double largest = e + f, smallest = std::abs(e - f);
-  if (!(smallest > 0.0))
+  // Flattened to a segment or a point (within rounding): the distortion is unbounded. It is
+  // reported as the largest ratio double precision resolves, so that the figures stay
+  // numbers in the outputs (field data, JSON) rather than infinities.
+  if (!(smallest > largest * (1.0 / MaximumQuasiConformalDistortion)))
   {
-    return std::numeric_limits<double>::infinity();
+    return MaximumQuasiConformalDistortion;
   }
   return largest / smallest;
 }
@@ -93,7 +96,9 @@ MapDistortion MeasureMapDistortion(
     weightedSum += originalArea[t] * qc;
     weight += originalArea[t];
     d.MaxQuasiConformal = std::max(d.MaxQuasiConformal, qc);
-    const double ratio = (mappedArea[t] / mappedTotal) / (originalArea[t] / originalTotal);
+    // A map collapsed to a point has no area at all: every ratio is 0, not 0 / 0.
+    const double ratio =
+      mappedTotal > 0.0 ? (mappedArea[t] / mappedTotal) / (originalArea[t] / originalTotal) : 0.0;
     d.MinAreaRatio = std::min(d.MinAreaRatio, ratio);
     d.MaxAreaRatio = std::max(d.MaxAreaRatio, ratio);
   }

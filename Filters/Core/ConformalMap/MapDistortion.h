@@ -7,6 +7,10 @@
 
 namespace mobius
 {
+/// The distortion of a triangle flattened to a segment or a point: unbounded, reported as
+/// 1e15, beyond which double precision cannot tell the two singular values apart.
+constexpr double MaximumQuasiConformalDistortion = 1e15;
+
 struct MapDistortion
 {
   /// Triangles of the spherical map whose signed volume det(a, b, c) (the tetrahedron with
@@ -14,7 +18,8 @@ struct MapDistortion
   Index FlippedTriangles = 0;
   /// Quasi-conformal distortion of a triangle: sigma_max / sigma_min of the linear map from
   /// the original triangle to the mapped (flat) triangle; 1 for a similarity. The mean is
-  /// weighted by original area. A mapped triangle with no area counts as +infinity.
+  /// weighted by original area. A mapped triangle with no area (a segment or a point)
+  /// counts as MaximumQuasiConformalDistortion.
   double MeanQuasiConformal = 1.0;
   double MaxQuasiConformal = 1.0;
   /// Mapped area / original area per triangle, after scaling both totals to 1.
@@ -38,7 +43,8 @@ double SmallestTriangleAngleDegrees(const Points& points, const Triangles& trian
 MapDistortion MeasureMapDistortion(
   const Points& original, const Points& mapped, const Triangles& triangles);
 
-/// Quasi-conformal distortion of one triangle map (sigma_max / sigma_min, >= 1).
+/// Quasi-conformal distortion of one triangle map (sigma_max / sigma_min, >= 1; at most
+/// MaximumQuasiConformalDistortion).
 double TriangleQuasiConformalDistortion(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
   const Eigen::Vector3d& p2, const Eigen::Vector3d& q0, const Eigen::Vector3d& q1,
   const Eigen::Vector3d& q2);

@@ -223,7 +223,8 @@ bool MeshTopologyReport::IsTopologicalSphere() const
 {
   return this->NumberOfTriangles > 0 && this->NonFinitePoints == 0 &&
     this->InvalidTriangles == 0 && this->RepeatedVertexTriangles == 0 &&
-    this->ZeroAreaTriangles == 0 && this->UnusedPoints == 0 && this->IsClosedManifold() &&
+    this->ZeroAreaTriangles == 0 && this->DuplicateTriangles == 0 && this->UnusedPoints == 0 &&
+    this->IsClosedManifold() &&
     this->InconsistentlyOrientedEdges == 0 && this->ConnectedComponents == 1 &&
     this->Genus == 0;
 }
@@ -288,6 +289,25 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
     {
       ++report.ZeroAreaTriangles;
     }
+  }
+  // A face listed twice (either way round) makes its edges non-manifold, and a single
+  // triangle closed by FillHoles becomes two triangles on the same points (a "pillow" with
+  // no inside): named as what they are rather than only through their edges.
+  std::vector<std::array<Index, 3>> corners;
+  corners.reserve(static_cast<size_t>(validCount));
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    if (valid[t])
+    {
+      std::array<Index, 3> sorted = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+      std::sort(sorted.begin(), sorted.end());
+      corners.push_back(sorted);
+    }
+  }
+  std::sort(corners.begin(), corners.end());
+  for (size_t i = 1; i < corners.size(); ++i)
+  {
+    report.DuplicateTriangles += corners[i] == corners[i - 1] ? 1 : 0;
   }
   const Index usedCount = std::count(used.begin(), used.end(), 1);
   report.UnusedPoints = n - usedCount;
@@ -435,6 +455,8 @@ std::string DescribeTopologyProblems(const MeshTopologyReport& r)
   add(r.RepeatedVertexTriangles, "triangle naming the same point twice",
     "triangles naming the same point twice");
   add(r.ZeroAreaTriangles, "zero-area triangle", "zero-area triangles");
+  add(r.DuplicateTriangles, "duplicate triangle (the same three points as another triangle)",
+    "duplicate triangles (the same three points as other triangles)");
   add(r.UnusedPoints, "point not used by any triangle", "points not used by any triangle");
   if (r.BoundaryEdges > 0)
   {

@@ -22,6 +22,7 @@ struct MeshTopologyReport
   Index InvalidTriangles = 0;        ///< triangles with an index outside [0, NumberOfPoints)
   Index RepeatedVertexTriangles = 0; ///< triangles naming the same point twice
   Index ZeroAreaTriangles = 0;       ///< three distinct points but (numerically) no area
+  Index DuplicateTriangles = 0;      ///< the same three points as an earlier triangle, either way round
   Index DuplicatePoints = 0;         ///< points with exactly the coordinates of another point
   Index UnusedPoints = 0;            ///< points no valid triangle refers to
   Index Edges = 0;

@@ -23,8 +23,10 @@ struct LaplaceBeltramiBasis
 /// Computes the `count` eigenpairs of smallest eigenvalue of L phi = lambda M phi, with L the
 /// cotangent stiffness of the intrinsic Delaunay triangulation (well-defined weights on
 /// needle triangles) and M the lumped mass, by shift-invert Lanczos (Spectra) on a sparse
-/// Cholesky factorization. Needs a closed, manifold, oriented mesh. Returns false with
-/// `error` set if the Laplacian cannot be built or the eigensolver does not converge.
+/// Cholesky factorization, with single-precision Lanczos vectors and a double-precision
+/// Rayleigh-Ritz step (eigenfunctions mass-orthonormal to double precision; eigenvalues the
+/// Rayleigh quotients). Needs a closed, manifold, oriented mesh. Returns false with `error`
+/// set if the Laplacian cannot be built or the eigensolver does not converge.
 bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangles, int count,
   LaplaceBeltramiBasis& basis, std::string& error);
 }

@@ -850,6 +850,15 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
   result.GridResolution = 2 * bandwidth;
   result.RefinementBandwidth = bandwidth;
   const double energySum = result.SourceEnergy + result.TargetEnergy;
+  // The constant band (Y_00 is invariant under every orthogonal T) contributes f_00 g_00 to
+  // C(T) and |f_00|^2, |g_00|^2 to the energies; without it, the mean-free signals.
+  const double constantProduct = source.Bandwidth > 0 && target.Bandwidth > 0
+    ? std::real(source(0, 0) * std::conj(target(0, 0)))
+    : 0.0;
+  const double meanFreeNorms = source.Bandwidth > 0 && target.Bandwidth > 0
+    ? std::sqrt(std::max(0.0, result.SourceEnergy - std::norm(source(0, 0))) *
+        std::max(0.0, result.TargetEnergy - std::norm(target(0, 0))))
+    : 0.0;
   const int wanted = std::max(1, options.NumberOfCandidates);
   const int refinementBandwidth =
     std::max(bandwidth, ChooseRefinementBandwidth(source, target, options.RefinementTolerance));
@@ -889,6 +898,9 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
     candidate.Score = peak.Score;
     candidate.RegistrationError =
       energySum > 0 ? (energySum - 2.0 * peak.Score) / energySum : 0.0;
+    candidate.CorrelationCoefficient = meanFreeNorms > 0
+      ? std::max(-1.0, std::min(1.0, (peak.Score - constantProduct) / meanFreeNorms))
+      : 0.0;
     result.Candidates.push_back(candidate);
   }
   if (!result.Candidates.empty())
@@ -899,6 +911,7 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
     result.EulerAngles = best.EulerAngles;
     result.Score = best.Score;
     result.RegistrationError = best.RegistrationError;
+    result.CorrelationCoefficient = best.CorrelationCoefficient;
   }
   return result;
 }

@@ -77,6 +77,10 @@ struct SO3Candidate
   double Score = 0.0;
   /// (|f|² + |g|² - 2 C) / (|f|² + |g|²) = |f∘T⁻¹ - g|² / (|f|² + |g|²), in [0, 2].
   double RegistrationError = 0.0;
+  /// Pearson correlation of f∘T⁻¹ with g over the sphere, in [-1, 1]: C(T) with the
+  /// constant band left out, divided by the norms of the mean-free signals (0 if either is
+  /// constant). Unlike the score it ignores the signals' means and sizes.
+  double CorrelationCoefficient = 0.0;
 };
 
 struct SO3CorrelationResult
@@ -87,6 +91,7 @@ struct SO3CorrelationResult
   Eigen::Vector3d EulerAngles = Eigen::Vector3d::Zero();
   double Score = 0.0;
   double RegistrationError = 0.0;
+  double CorrelationCoefficient = 0.0;
   /// Best first; rotations and reflections mixed in mode Both.
   std::vector<SO3Candidate> Candidates;
   int CorrelationBandwidth = 0; // B' of the search grid

@@ -1,0 +1,406 @@
+#include "vtkSymmetryDetection.h"
+
+#include "SymmetryMeasures.h"
+#include "VertexSnapping.h"
+#include "vtkCorrespondenceOutput.h"
+#include "vtkCorrespondenceRefinement.h"
+#include "vtkDenseCorrespondence.h"
+#include "vtkMobiusCenter.h"
+#include "vtkSO3Register.h"
+#include "vtkSphericalConformalMap.h"
+#include "vtkSphericalMapData.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkSymmetryDetection);
+
+namespace
+{
+using Matrix3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+// Runs one stage of the internal pipeline on `input`: its progress becomes a slice
+// [begin, end] of the owner's, the owner's abort stops it, and its error and warning
+// messages are collected (not printed) so that the owner reports them as its own.
+class InternalStage
+{
+public:
+  InternalStage(vtkSymmetryDetection* owner, double begin, double end)
+    : Owner(owner)
+    , Begin(begin)
+    , End(end)
+  {
+  }
+
+  vtkSmartPointer<vtkPolyData> Run(vtkPolyDataAlgorithm* filter)
+  {
+    vtkNew<vtkCallbackCommand> messages;
+    messages->SetClientData(this);
+    messages->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
+      auto stage = static_cast<InternalStage*>(self);
+      std::string text = data ? static_cast<const char*>(data) : "";
+      // VTK prefixes messages with the class and address; keep the sentence.
+      const auto colon = text.find("): ");
+      if (colon != std::string::npos)
+      {
+        text = text.substr(colon + 3);
+      }
+      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      {
+        text.pop_back();
+      }
+      if (event == vtkCommand::ErrorEvent)
+      {
+        if (stage->Error.empty())
+        {
+          stage->Error = text;
+        }
+      }
+      else
+      {
+        stage->Warnings.push_back(text);
+      }
+    });
+    vtkNew<vtkCallbackCommand> progress;
+    progress->SetClientData(this);
+    progress->SetCallback([](vtkObject* caller, unsigned long, void* self, void* data) {
+      auto stage = static_cast<InternalStage*>(self);
+      const double fraction = data ? *static_cast<double*>(data) : 0.0;
+      stage->Owner->UpdateProgress(stage->Begin + (stage->End - stage->Begin) * fraction);
+      if (stage->Owner->GetAbortExecute())
+      {
+        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+      }
+    });
+    vtkNew<vtkCallbackCommand> ignore; // the executive's "returned failure" repeats the error
+    filter->AddObserver(vtkCommand::ErrorEvent, messages);
+    filter->AddObserver(vtkCommand::WarningEvent, messages);
+    filter->AddObserver(vtkCommand::ProgressEvent, progress);
+    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
+    filter->Update();
+    auto output = vtkSmartPointer<vtkPolyData>::New();
+    output->ShallowCopy(filter->GetOutput());
+    if (this->Error.empty() && output->GetNumberOfPoints() == 0 && !this->Owner->GetAbortExecute())
+    {
+      this->Error = "the stage produced no output";
+    }
+    return this->Error.empty() ? output : nullptr;
+  }
+
+  std::string Error;
+  std::vector<std::string> Warnings;
+
+private:
+  vtkSymmetryDetection* Owner;
+  double Begin, End;
+};
+
+// A spherical map carries its surface in `SurfacePoints` and lies on the unit sphere; any
+// other input is a surface mesh still to be mapped.
+bool IsSphericalMap(vtkPolyData* input)
+{
+  mobius::Points points;
+  return mobius::vtk::CheckSurfacePoints(input).empty() &&
+    input->GetCellData()->GetArray(mobius::vtk::SurfaceAreaArrayName) &&
+    mobius::vtk::ExtractPoints(input, points).empty() &&
+    mobius::vtk::CheckOnUnitSphere(points).empty();
+}
+
+void AddTuples(vtkFieldData* fieldData, const char* name, int components,
+  const std::vector<double>& values)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    array->SetValue(static_cast<vtkIdType>(i), values[i]);
+  }
+  fieldData->RemoveArray(name);
+  fieldData->AddArray(array);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSymmetryDetection::vtkSymmetryDetection() = default;
+
+//------------------------------------------------------------------------------
+int vtkSymmetryDetection::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // No exception may leave the pipeline (in ParaView it would end the application).
+  try
+  {
+    return this->ComputeOutput(request, inputVector, outputVector);
+  }
+  catch (...)
+  {
+    return mobius::vtk::ReportException(this, outputVector);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkSymmetryDetection::ComputeOutput(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "Missing input or output polydata.");
+    return 0;
+  }
+  if (input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< "Cannot detect symmetry: the input is empty.");
+    return 0;
+  }
+  if (this->Resolution < 4 || this->Resolution % 2 != 0)
+  {
+    vtkErrorMacro(<< "Resolution must be even and at least 4 (it is " << this->Resolution
+                  << ").");
+    return 0;
+  }
+
+  // Each stage's result, or its error as this filter's.
+  auto run = [this](vtkPolyDataAlgorithm* filter, const char* stage, double begin, double end) {
+    InternalStage internal(this, begin, end);
+    vtkSmartPointer<vtkPolyData> result = internal.Run(filter);
+    for (const auto& warning : internal.Warnings)
+    {
+      vtkWarningMacro(<< stage << ": " << warning);
+    }
+    if (!result && !this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Cannot detect symmetry: " << stage << ": " << internal.Error);
+    }
+    return this->GetAbortExecute() ? nullptr : result;
+  };
+
+  // The stages run on a copy: the pipeline's input object stays out of the internal pipeline.
+  vtkSmartPointer<vtkPolyData> map = vtkSmartPointer<vtkPolyData>::New();
+  map->ShallowCopy(input);
+  if (!IsSphericalMap(input))
+  {
+    vtkNew<vtkSphericalConformalMap> conformal;
+    conformal->SetInputData(map);
+    // Centering between flow steps is centering too: off for the uncentered comparison.
+    conformal->SetCenterBetweenSteps(this->Centering);
+    if (!(map = run(conformal, "conformal map", 0.0, 0.3)))
+    {
+      return 0;
+    }
+  }
+  vtkSmartPointer<vtkPolyData> centered = map;
+  if (this->Centering)
+  {
+    vtkNew<vtkMobiusCenter> center;
+    center->SetInputData(map);
+    if (!(centered = run(center, "centering", 0.3, 0.35)))
+    {
+      return 0;
+    }
+  }
+
+  // The map against itself, orientation-reversing transforms only: the mirror symmetries.
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceData(centered);
+  registration->SetTargetData(centered);
+  registration->SetResolution(this->Resolution);
+  registration->SetSmoothingTime(this->SmoothingTime);
+  registration->SetNumberOfCandidates(this->NumberOfCandidates);
+  registration->SetTransformModeToReflections();
+  vtkSmartPointer<vtkPolyData> reflected = run(registration, "reflective registration", 0.35, 0.5);
+  if (!reflected)
+  {
+    return 0;
+  }
+
+  // The refinement samples BasisSize eigenfunctions on about twice as many vertices.
+  const bool refine =
+    this->Refine && centered->GetNumberOfPoints() >= 2 * static_cast<vtkIdType>(this->BasisSize);
+  if (this->Refine && !refine)
+  {
+    vtkWarningMacro(<< "Refinement skipped: the mesh has " << centered->GetNumberOfPoints()
+                    << " vertices, fewer than twice the BasisSize (" << this->BasisSize
+                    << "); the symmetric map is the Moebius map.");
+  }
+  vtkSmartPointer<vtkPolyData> symmetric;
+  if (refine)
+  {
+    // The transforms are reflections, so the refinement expects an orientation-reversing
+    // map and repairs one that comes out orientation-preserving (e.g. the identity).
+    vtkNew<vtkCorrespondenceRefinement> refinement;
+    refinement->SetSourceData(reflected);
+    refinement->SetTargetData(centered);
+    refinement->SetBasisSize(this->BasisSize);
+    refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), this->BasisSize));
+    refinement->SetOutputGeometryToSource();
+    symmetric = run(refinement, "refinement", 0.5, 0.95);
+  }
+  else
+  {
+    vtkNew<vtkDenseCorrespondence> correspondence;
+    correspondence->SetSourceData(reflected);
+    correspondence->SetTargetData(centered);
+    correspondence->SetOutputGeometryToSource();
+    symmetric = run(correspondence, "dense correspondence", 0.5, 0.95);
+  }
+  if (!symmetric)
+  {
+    return 0;
+  }
+
+  // The map as triangles and barycentric coordinates, made exact where the spherical map is
+  // exactly symmetric (VertexSnapping.h), and assembled again so that every output array
+  // agrees with the snapped map.
+  mobius::Points surface, sphere, reflectedSphere, mirrorPoints;
+  mobius::Triangles triangles;
+  mobius::Vector areas;
+  std::string error = mobius::vtk::ExtractSurfacePoints(centered, surface);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractSphericalMap(centered, false, sphere, triangles, areas);
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractPoints(reflected, reflectedSphere);
+  }
+  vtkDataArray* cells = symmetric->GetPointData()->GetArray("TargetCellId");
+  vtkDataArray* barycentric = symmetric->GetPointData()->GetArray("TargetBarycentric");
+  if (error.empty() && (!cells || !barycentric))
+  {
+    error = "the symmetric map lacks TargetCellId or TargetBarycentric";
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot detect symmetry: " << error << ".");
+    return 0;
+  }
+  const vtkIdType n = symmetric->GetNumberOfPoints();
+  mobius::vtk::SurfaceLocations locations;
+  locations.LocatedTriangles = &triangles;
+  locations.Triangle.resize(n);
+  locations.Barycentric.resize(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    locations.Triangle[v] = static_cast<mobius::Index>(cells->GetComponent(v, 0));
+    barycentric->GetTuple(v, locations.Barycentric[v].data());
+  }
+  mobius::Index snapped = 0;
+  if (this->SnapTolerance > 0)
+  {
+    snapped = mobius::SnapToCoincidentVertices(reflectedSphere, sphere, triangles,
+      this->SnapTolerance, locations.Triangle, locations.Barycentric, error);
+    if (snapped < 0)
+    {
+      vtkErrorMacro(<< "Cannot detect symmetry: " << error << ".");
+      return 0;
+    }
+  }
+  vtkNew<vtkPolyData> assembled;
+  mobius::vtk::AssembleCorrespondence(reflected, centered, locations, false, assembled);
+  // The refinement's or dense correspondence's own field data (candidates, residuals).
+  vtkFieldData* stageFields = symmetric->GetFieldData();
+  for (int a = 0; a < stageFields->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = stageFields->GetAbstractArray(a);
+    if (array->GetName() && !assembled->GetFieldData()->HasArray(array->GetName()))
+    {
+      assembled->GetFieldData()->AddArray(array);
+    }
+  }
+  vtkDataArray* mapped = assembled->GetPointData()->GetArray("MappedPoints");
+  mirrorPoints.resize(n, 3);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    double point[3];
+    mapped->GetTuple(v, point);
+    mirrorPoints.row(v) << point[0], point[1], point[2];
+  }
+  const double scale = std::sqrt(areas.sum());
+  const mobius::Vector asymmetry =
+    mobius::MirrorAsymmetry(surface, triangles, locations.Triangle, locations.Barycentric, mirrorPoints) /
+    scale;
+
+  output->ShallowCopy(assembled);
+  vtkNew<vtkDoubleArray> asymmetryArray;
+  asymmetryArray->SetName("Asymmetry");
+  asymmetryArray->SetNumberOfTuples(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    asymmetryArray->SetValue(v, asymmetry(v));
+  }
+  output->GetPointData()->AddArray(asymmetryArray);
+  output->GetPointData()->SetActiveScalars("Asymmetry");
+
+  // The distance and the plane of every candidate reflection, best first.
+  vtkFieldData* fieldData = output->GetFieldData();
+  vtkDataArray* transforms = reflected->GetFieldData()->GetArray("CandidateTransforms");
+  vtkDataArray* coefficients =
+    reflected->GetFieldData()->GetArray("CandidateCorrelationCoefficients");
+  if (!transforms || !coefficients || transforms->GetNumberOfTuples() == 0 ||
+    transforms->GetNumberOfTuples() != coefficients->GetNumberOfTuples())
+  {
+    vtkErrorMacro(<< "Cannot detect symmetry: the registration reported no candidates.");
+    return 0;
+  }
+  std::vector<double> distances, normals;
+  for (vtkIdType c = 0; c < transforms->GetNumberOfTuples(); ++c)
+  {
+    distances.push_back(mobius::SymmetryDistance(coefficients->GetComponent(c, 0)));
+    Matrix3 transform;
+    transforms->GetTuple(c, transform.data());
+    const mobius::MirrorPlane plane = mobius::MirrorPlaneOf(transform);
+    normals.insert(normals.end(), plane.Normal.data(), plane.Normal.data() + 3);
+  }
+  Matrix3 best;
+  transforms->GetTuple(0, best.data());
+  const mobius::MirrorPlane plane = mobius::MirrorPlaneOf(best);
+  mobius::vtk::SetFieldValue(fieldData, "SymmetryDistance", distances[0]);
+  AddTuples(fieldData, "CandidateSymmetryDistances", 1, distances);
+  mobius::vtk::SetFieldValues(fieldData, "Reflection", best.data(), 9);
+  mobius::vtk::SetFieldValues(fieldData, "MirrorPlaneNormal", plane.Normal.data(), 3);
+  mobius::vtk::SetFieldValue(fieldData, "MirrorPlaneTwist", plane.Twist);
+  AddTuples(fieldData, "CandidateMirrorPlaneNormals", 3, normals);
+  mobius::vtk::SetFieldValue(fieldData, "MeanAsymmetry", asymmetry.mean());
+  mobius::vtk::SetFieldValue(fieldData, "MaximumAsymmetry", asymmetry.maxCoeff());
+  mobius::vtk::SetFieldValue(fieldData, "SymmetryCentered", this->Centering ? 1 : 0);
+  mobius::vtk::SetFieldValue(fieldData, "SymmetryRefined", refine ? 1 : 0);
+  mobius::vtk::SetFieldValue(fieldData, "SnappedVertices", static_cast<double>(snapped));
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSymmetryDetection::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Centering: " << this->Centering << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
+  os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "Refine: " << this->Refine << "\n";
+  os << indent << "BasisSize: " << this->BasisSize << "\n";
+  os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
+}

@@ -1,0 +1,281 @@
+"""One call for the whole registration, with numpy arrays in and out.
+
+    import mobiusregistration
+    result = mobiusregistration.register("source.off", "target.off")
+    result.mapped_points          # (n, 3): each source vertex placed on the target
+    result.transfer(target_values)  # per-target-vertex values carried to the source
+
+`register` runs the pipeline of the `mobius-register` program: a conformal map of each
+mesh onto the sphere (vtkSphericalConformalMap), its centering (vtkMobiusCenter), the
+rotation between them (vtkSO3Register) and the dense map, refined spectrally
+(vtkCorrespondenceRefinement) unless refine=False (vtkDenseCorrespondence, the paper's
+Möbius map). A filter's error, or a degenerate conformal map, raises RegistrationError
+with the filter's message.
+"""
+import os
+import warnings
+
+import numpy as np
+from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+from .vtkMobiusRegistrationFilters import (
+    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register,
+    vtkSphericalConformalMap, vtkSurfaceMeshReader)
+
+__all__ = ["register", "Registration", "RegistrationError"]
+
+# The options and their defaults: the same as mobius-register's.
+DEFAULT_OPTIONS = {
+    "refine": True,               # spectral refinement (False: the Möbius map alone)
+    "basis_size": 80,             # eigenfunctions of the refinement
+    "resolution": 256,            # scale-factor grid of the SO(3) correlation (even)
+    "smoothing": 0.0005,          # heat-kernel smoothing time of the scale factors
+    "transform": "rotation",      # rotation | reflection | both
+    "candidates": 4,              # correlation peaks the refinement starts from
+    "iterations": 100,            # maximum conformal flow steps
+    "tolerance": 1e-4,            # conformal flow convergence tolerance
+    "fill_holes": False,          # close holes instead of rejecting open meshes
+    "keep_largest_component": False,
+    "allow_poor_maps": False,     # accept degenerate conformal maps instead of raising
+}
+_TRANSFORM_MODES = {"rotation": 0, "reflection": 1, "both": 2}
+
+
+class RegistrationError(RuntimeError):
+    """A mesh could not be read or mapped; the message is the filter's."""
+
+
+class _Errors:
+    """Collects the error messages of the filters it watches (and keeps VTK from printing them)."""
+
+    def __init__(self):
+        self.messages = []
+
+    def watch(self, algorithm):
+        algorithm.AddObserver(vtkCommand.ErrorEvent, self._record)
+        # The executive's "Algorithm ... returned failure" only repeats the filter's message.
+        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda obj, event: None)
+        return algorithm
+
+    def _record(self, obj, event, message=None):
+        text = str(message).split("): ", 1)[-1].strip() if message else "error"
+        self.messages.append(f"{obj.GetClassName()}: {text}")
+    _record.CallDataType = "string0"
+
+    def raise_if_any(self, what):
+        if self.messages:
+            raise RegistrationError(f"{what}: " + "; ".join(self.messages))
+
+
+def _as_polydata(mesh, name, errors):
+    """A file name, a vtkPolyData, or (vertices, faces) arrays, as a vtkPolyData."""
+    if isinstance(mesh, (str, bytes, os.PathLike)):
+        path = os.fsdecode(mesh)
+        reader = errors.watch(vtkSurfaceMeshReader())
+        reader.SetFileName(path)
+        reader.Update()
+        errors.raise_if_any(path)
+        return reader.GetOutput(), path
+    if isinstance(mesh, vtkPolyData):
+        return mesh, name
+    if isinstance(mesh, (tuple, list)) and len(mesh) == 2:
+        vertices = np.ascontiguousarray(mesh[0], dtype=np.float64)
+        faces = np.ascontiguousarray(mesh[1], dtype=np.int64)
+        if vertices.ndim != 2 or vertices.shape[1] != 3:
+            raise ValueError(f"{name}: vertices must be an (n, 3) array, got shape {vertices.shape}")
+        if faces.ndim != 2 or faces.shape[1] != 3:
+            raise ValueError(f"{name}: faces must be an (m, 3) array of triangles, got shape {faces.shape}")
+        if faces.size and (faces.min() < 0 or faces.max() >= len(vertices)):
+            raise ValueError(f"{name}: face vertex numbers must lie in 0..{len(vertices) - 1}")
+        points = vtkPoints()
+        points.SetData(numpy_to_vtk(vertices, deep=True))
+        connectivity = np.hstack([np.full((len(faces), 1), 3, dtype=np.int64), faces]).ravel()
+        cells = vtkCellArray()
+        cells.SetCells(len(faces), numpy_to_vtkIdTypeArray(connectivity, deep=True))
+        polydata = vtkPolyData()
+        polydata.SetPoints(points)
+        polydata.SetPolys(cells)
+        return polydata, name
+    raise TypeError(f"{name}: expected a file name, a vtkPolyData or (vertices, faces) arrays, "
+                    f"got {type(mesh).__name__}")
+
+
+def _field_values(polydata):
+    """The output's numeric field data arrays, as numpy arrays (single values as floats)."""
+    fields = {}
+    field_data = polydata.GetFieldData()
+    for index in range(field_data.GetNumberOfArrays()):
+        array = field_data.GetArray(index)
+        if array is None or not array.GetName():
+            continue
+        values = vtk_to_numpy(array).copy()
+        fields[array.GetName()] = float(values.ravel()[0]) if values.size == 1 else values
+    return fields
+
+
+def _centered_map(polydata, name, options, errors):
+    conformal = errors.watch(vtkSphericalConformalMap())
+    conformal.SetInputData(polydata)
+    conformal.SetMaximumNumberOfIterations(int(options["iterations"]))
+    conformal.SetConvergenceTolerance(float(options["tolerance"]))
+    conformal.SetFillHoles(bool(options["fill_holes"]))
+    conformal.SetKeepLargestComponent(bool(options["keep_largest_component"]))
+    center = errors.watch(vtkMobiusCenter())
+    center.SetInputConnection(conformal.GetOutputPort())
+    center.Update()
+    errors.raise_if_any(name)
+    field = conformal.GetOutput().GetFieldData()
+    degenerate = field.GetArray("DegenerateMap")
+    if degenerate is not None and degenerate.GetValue(0) == 1 and not options["allow_poor_maps"]:
+        reason = field.GetAbstractArray("DegenerateMapReason")
+        raise RegistrationError(f"{name}: degenerate conformal map: "
+                                f"{reason.GetValue(0) if reason is not None else 'unknown reason'}"
+                                " (allow_poor_maps=True accepts it)")
+    result = vtkPolyData()
+    result.DeepCopy(center.GetOutput())
+    return result, _field_values(conformal.GetOutput())
+
+
+class Registration:
+    """The map from the source's vertices to points on the target surface.
+
+    Row i of every per-vertex array belongs to source vertex i (numbered as in the input:
+    file order, or the rows of the vertices array), listed in `source_vertex`.
+
+    - `target_triangle` (n,): the triangle of the target's (repaired) map the vertex lands in;
+    - `target_vertices` (n, 3): that triangle's corners, numbered as the target's input
+      vertices (-1: a vertex that fill_holes created);
+    - `barycentric` (n, 3): the point's barycentric coordinates in that triangle;
+    - `mapped_points` (n, 3): the point on the target surface;
+    - `transform` (3, 3): the rotation (or reflection) aligning the two spherical maps;
+    - `quality`: the main figures (registration error, conformal distortion of each map,
+      refinement residuals when refined); `fields`: every numeric field of the output;
+    - `polydata`: the output vtkPolyData (the source mesh on the target, with all arrays).
+    """
+
+    def __init__(self, polydata, target_vertex_count, quality, fields):
+        point_data = polydata.GetPointData()
+
+        def point_array(name):
+            array = point_data.GetArray(name)
+            if array is None:
+                raise RegistrationError(f"the correspondence has no {name} array")
+            return vtk_to_numpy(array).copy()
+
+        order = slice(None)
+        source_vertex = point_array("InputPointId").astype(np.int64).ravel()
+        # Repairs may renumber the source's vertices: put the rows back in input order when
+        # every input vertex is there once.
+        if np.array_equal(np.sort(source_vertex), np.arange(len(source_vertex))):
+            order = np.argsort(source_vertex)
+        self.source_vertex = source_vertex[order]
+        self.target_triangle = point_array("TargetCellId").astype(np.int64).ravel()[order]
+        self.target_vertices = point_array("TargetInputPointIds").astype(np.int64).reshape(-1, 3)[order]
+        self.barycentric = point_array("TargetBarycentric").reshape(-1, 3)[order]
+        self.mapped_points = point_array("MappedPoints").reshape(-1, 3)[order]
+        self.transform = np.asarray(fields["Rotation"], dtype=float).reshape(3, 3)
+        self.quality = quality
+        self.fields = fields
+        self.polydata = polydata
+        self.target_vertex_count = target_vertex_count
+
+    def __repr__(self):
+        figures = ", ".join(f"{key}={value:.4g}" for key, value in self.quality.items())
+        return f"<Registration of {len(self.source_vertex)} source vertices: {figures}>"
+
+    def transfer(self, values):
+        """Carries per-target-vertex values to the source vertices.
+
+        `values`: shape (number of target vertices,) or (number of target vertices, k), in
+        the target's input vertex order. Returns (n,) or (n, k): each source vertex gets
+        the barycentric interpolation of the values at the corners of its target triangle.
+        Corners that fill_holes created (no input vertex) are left out and the remaining
+        weights renormalized.
+        """
+        values = np.asarray(values)
+        if values.ndim not in (1, 2) or values.shape[0] != self.target_vertex_count:
+            raise ValueError(f"values must have one row per target vertex ({self.target_vertex_count}), "
+                             f"got shape {values.shape}")
+        valid = self.target_vertices >= 0
+        weights = np.where(valid, self.barycentric, 0.0)
+        totals = weights.sum(axis=1, keepdims=True)
+        weights = np.divide(weights, totals, out=np.full_like(weights, np.nan), where=totals > 0)
+        corners = values[np.where(valid, self.target_vertices, 0)]  # (n, 3) or (n, 3, k)
+        if values.ndim == 1:
+            return np.einsum("ij,ij->i", weights, corners.astype(float))
+        return np.einsum("ij,ijk->ik", weights, corners.astype(float))
+
+
+def register(source, target, **options):
+    """Registers `source` onto `target` and returns a Registration.
+
+    `source`, `target`: a mesh file name (.obj .off .ply .stl .vtp .vtk), a vtkPolyData, or
+    a (vertices, faces) pair of arrays ((n, 3) floats, (m, 3) vertex numbers). Both must be
+    closed genus-0 triangle surfaces (see fill_holes, keep_largest_component).
+
+    Options (defaults as mobius-register's): refine=True, basis_size=80, resolution=256,
+    smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
+    iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,
+    allow_poor_maps=False.
+
+    Raises RegistrationError (with the filter's message) when a mesh cannot be read or
+    mapped, TypeError for an unknown option, ValueError for a malformed one.
+    """
+    unknown = sorted(set(options) - set(DEFAULT_OPTIONS))
+    if unknown:
+        raise TypeError(f"register() got unknown option(s) {', '.join(unknown)}; "
+                        f"known: {', '.join(DEFAULT_OPTIONS)}")
+    options = dict(DEFAULT_OPTIONS, **options)
+    if options["transform"] not in _TRANSFORM_MODES:
+        raise ValueError(f"transform must be one of {', '.join(_TRANSFORM_MODES)}, got {options['transform']!r}")
+    resolution = int(options["resolution"])
+    if resolution < 4 or resolution % 2:
+        raise ValueError(f"resolution must be an even number >= 4, got {options['resolution']!r}")
+
+    errors = _Errors()
+    source_mesh, source_name = _as_polydata(source, "source", errors)
+    target_mesh, target_name = _as_polydata(target, "target", errors)
+    source_map, source_fields = _centered_map(source_mesh, source_name, options, errors)
+    target_map, target_fields = _centered_map(target_mesh, target_name, options, errors)
+
+    registration = errors.watch(vtkSO3Register())
+    registration.SetSourceData(source_map)
+    registration.SetTargetData(target_map)
+    registration.SetResolution(resolution)
+    registration.SetSmoothingTime(float(options["smoothing"]))
+    registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
+    registration.SetNumberOfCandidates(int(options["candidates"]))
+
+    basis_size = int(options["basis_size"])
+    refine = bool(options["refine"])
+    smallest = min(source_map.GetNumberOfPoints(), target_map.GetNumberOfPoints())
+    if refine and smallest < 2 * basis_size:
+        # As mobius-register: the refinement's eigenbasis needs twice as many vertices.
+        warnings.warn(f"meshes with fewer than {2 * basis_size} vertices (2 x basis_size): "
+                      "the spectral refinement is skipped, the Möbius map is returned")
+        refine = False
+    if refine:
+        correspondence = errors.watch(vtkCorrespondenceRefinement())
+        correspondence.SetBasisSize(basis_size)
+        correspondence.SetStartBasisSize(min(correspondence.GetStartBasisSize(), basis_size))
+        correspondence.SetScreeningBasisSize(min(correspondence.GetScreeningBasisSize(), basis_size))
+    else:
+        correspondence = errors.watch(vtkDenseCorrespondence())
+    correspondence.SetSourceConnection(registration.GetOutputPort())
+    correspondence.SetTargetData(target_map)
+    correspondence.Update()
+    errors.raise_if_any(f"{source_name} -> {target_name}")
+
+    output = vtkPolyData()
+    output.DeepCopy(correspondence.GetOutput())
+    fields = dict(_field_values(registration.GetOutput()), **_field_values(output))
+    quality = {}
+    for key in ("RegistrationError", "RefinementOrthogonalityResidual", "RefinementOrientationAgreement"):
+        if key in fields:
+            quality[key] = fields[key]
+    for side, side_fields in (("Source", source_fields), ("Target", target_fields)):
+        if "MeanQuasiConformalDistortion" in side_fields:
+            quality[side + "MeanQuasiConformalDistortion"] = side_fields["MeanQuasiConformalDistortion"]
+    return Registration(output, target_mesh.GetNumberOfPoints(), quality, fields)

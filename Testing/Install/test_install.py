@@ -1,0 +1,137 @@
+"""Install into a staging prefix and use everything from there, as a user would: the
+programs (version, man pages, the demo on its installed mesh), the Python package under
+python3 and pvpython, the ParaView plugin, and find_package(MobiusRegistration) from a
+separate CMake project (Examples/Cxx) built and run against the staged tree."""
+import argparse
+import glob
+import os
+import shutil
+import subprocess
+import sys
+
+parser = argparse.ArgumentParser()
+for option in ("--cmake", "--build", "--source", "--work", "--python", "--mesh-dir"):
+    parser.add_argument(option, required=True)
+parser.add_argument("--pvpython")
+args = parser.parse_args()
+
+shutil.rmtree(args.work, ignore_errors=True)
+os.makedirs(args.work)
+prefix = os.path.join(args.work, "prefix")
+failures = []
+
+
+def check(condition, message):
+    if not condition:
+        failures.append(message)
+        print("FAILED:", message)
+
+
+# Nothing from the build may leak in through the environment: the installed files must
+# find each other by themselves.
+clean_env = {name: value for name, value in os.environ.items()
+             if name not in ("PYTHONPATH", "LD_LIBRARY_PATH", "PV_PLUGIN_PATH", "PV_PLUGIN_CONFIG_FILE")}
+
+
+def run(command, env=None, cwd=None, timeout=600):
+    result = subprocess.run(command, env=env or clean_env, cwd=cwd or args.work, capture_output=True,
+                            text=True, errors="replace", timeout=timeout)
+    if result.returncode != 0:
+        print("$", " ".join(command), "\n", result.stdout[-3000:], result.stderr[-3000:])
+    return result
+
+
+result = run([args.cmake, "--install", args.build, "--prefix", prefix])
+if result.returncode != 0:
+    sys.exit("cmake --install failed")
+
+
+def installed(pattern):
+    return sorted(glob.glob(os.path.join(prefix, pattern), recursive=True))
+
+
+# What the install must hold.
+for pattern in ("bin/mobius-register", "bin/mobius-benchmark", "share/man/man1/mobius-register.1",
+                "share/man/man1/mobius-benchmark.1", "include/MobiusRegistration/vtkSO3Register.h",
+                "include/MobiusRegistration/vtkMobiusRegistrationFiltersModule.h",
+                "lib*/**/cmake/MobiusRegistration/MobiusRegistrationConfig.cmake",
+                "lib*/**/cmake/MobiusRegistration/MobiusRegistration-targets.cmake",
+                "lib/python3/dist-packages/mobiusregistration/__init__.py",
+                "share/mobius-registration/meshes/cow.off"):
+    check(installed(pattern), f"the install has no {pattern}")
+check(not installed("**/*Test*"), f"tests were installed: {installed('**/*Test*')[:5]}")
+
+# The programs: run from the staged bin, not the build.
+program = os.path.join(prefix, "bin", "mobius-register")
+result = run([program, "--version"])
+check(result.returncode == 0 and result.stdout.startswith("mobius-register "),
+      f"mobius-register --version: {result.returncode} {result.stdout!r}")
+result = run([os.path.join(prefix, "bin", "mobius-benchmark"), "--help"])
+check(result.returncode == 0 and "usage: mobius-benchmark" in result.stdout, "mobius-benchmark --help")
+for name, option in (("mobius-register", "resolution"), ("mobius-benchmark", "repeat")):
+    page = os.path.join(prefix, "share/man/man1", name + ".1")
+    text = open(page, encoding="utf-8").read() if os.path.exists(page) else ""
+    check(text.startswith(".TH ") and ".SH SYNOPSIS" in text and f"\\-\\-{option}" in text,
+          f"{page} is not the program's --help as a man page")
+# The demo with no meshes given reads the installed cow (the build's copy is elsewhere);
+# the Möbius map at a coarse resolution keeps it quick, and -o leaves out the picture
+# (which needs a display).
+result = run([program, "--resolution", "64", "--refine", "none", "--quiet", "--json", "-o", "demo"], timeout=600)
+check(result.returncode == 0 and os.path.join(prefix, "share/mobius-registration/meshes/cow.off") in result.stdout,
+      f"the installed demo did not run on the installed mesh: {result.returncode} {result.stdout[:500]!r}")
+check(os.path.exists(os.path.join(args.work, "demo.vtp")), "the demo wrote no demo.vtp")
+
+# The Python package from the staged dist-packages (a staging prefix is on no default path).
+python_env = dict(clean_env, PYTHONPATH=os.path.join(prefix, "lib/python3/dist-packages"))
+probe = ("import mobiusregistration, sys; assert mobiusregistration.__file__.startswith(sys.argv[1]), "
+         "mobiusregistration.__file__; mobiusregistration.vtkSO3Register(); print('imported')")
+interpreters = [args.python] + ([args.pvpython] if args.pvpython else [])
+for interpreter in interpreters:
+    result = run([interpreter, "-c", probe, prefix], env=python_env)
+    check(result.returncode == 0 and "imported" in result.stdout,
+          f"{interpreter}: import mobiusregistration from the staged prefix")
+
+# The plugin, loaded by pvpython from the staged plugin directory, runs a filter by name.
+if args.pvpython:
+    plugins = installed("lib*/**/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so")
+    check(len(plugins) == 1, f"plugin files: {plugins}")
+    # The autoload link (installed for the /usr prefix) must lead to the installed plugin.
+    for link in installed("bin/plugins/*"):
+        check(plugins and os.path.realpath(link) == os.path.realpath(plugins[0]),
+              f"{link} does not lead to the installed plugin")
+    if plugins:
+        script = (
+            "import sys\n"
+            "from paraview.simple import *\n"
+            "from paraview import servermanager\n"
+            "LoadPlugin(sys.argv[1], remote=False, ns=globals())\n"
+            "sphere = Sphere(ThetaResolution=24, PhiResolution=12)\n"
+            "conformal = SphericalConformalMap(Input=sphere)\n"
+            "conformal.UpdatePipeline()\n"
+            "assert servermanager.Fetch(conformal).GetNumberOfPoints() > 0\n"
+            "print('plugin ran')\n")
+        result = run([args.pvpython, "--force-offscreen-rendering", "-c", script, plugins[0]], env=clean_env)
+        check(result.returncode == 0 and "plugin ran" in result.stdout, "pvpython: the staged plugin")
+
+# A separate CMake project finds the staged package and builds the C++ example.
+example_build = os.path.join(args.work, "example-build")
+result = run([args.cmake, "-S", os.path.join(args.source, "Examples/Cxx"), "-B", example_build,
+              f"-DCMAKE_PREFIX_PATH={prefix}", "-DCMAKE_BUILD_TYPE=Release"])
+check(result.returncode == 0, "configure Examples/Cxx against the staged install")
+if result.returncode == 0:
+    result = run([args.cmake, "--build", example_build], timeout=900)
+    check(result.returncode == 0, "build Examples/Cxx against the staged install")
+    example = os.path.join(example_build, "register_two_meshes")
+    if result.returncode == 0:
+        result = run(["ldd", example])
+        library = [line for line in result.stdout.splitlines() if "MobiusRegistration" in line]
+        check(library and prefix in library[0], f"the example does not link the staged library: {library}")
+        hand = os.path.join(args.mesh_dir, "hand.off")
+        if os.path.exists(hand):
+            output = os.path.join(args.work, "example.vtp")
+            result = run([example, hand, hand, output])
+            check(result.returncode == 0 and os.path.exists(output), "the example built on the install runs")
+
+if failures:
+    sys.exit(f"{len(failures)} check(s) failed")
+print("install checks passed")

@@ -1,0 +1,128 @@
+"""mobiusregistration.register(): file, vtkPolyData and numpy inputs, the refined map's
+accuracy on a bent, rotated copy with known correspondence (vertex i <-> vertex i), the
+Möbius map with refine=False, transfer() of linear functions (reproduced exactly by
+barycentric interpolation), and errors raised with the filter's message."""
+import os
+import sys
+import warnings
+
+import numpy as np
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+import mobiusregistration
+from mobiusregistration import RegistrationError, register
+
+mesh_dir = os.environ.get("MOBIUS_MESH_DIR", "")
+hand = os.path.join(mesh_dir, "hand.off")
+if not os.path.exists(hand):
+    print(f"no example meshes in MOBIUS_MESH_DIR={mesh_dir!r}")
+    sys.exit(1)
+
+
+def read(path):
+    reader = mobiusregistration.vtkSurfaceMeshReader()
+    reader.SetFileName(path)
+    reader.Update()
+    polydata = reader.GetOutput()
+    vertices = vtk_to_numpy(polydata.GetPoints().GetData()).astype(float)
+    faces = vtk_to_numpy(polydata.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    return polydata, vertices, faces
+
+
+def surface_area(vertices, faces):
+    corners = vertices[faces]
+    return 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1).sum()
+
+
+hand_polydata, vertices, faces = read(hand)
+# The bent copy: bent along the hand's longest axis, then turned by a known rotation.
+# Vertex i of the copy is the image of vertex i: the true map is the identity on numbers.
+centered = vertices - vertices.mean(axis=0)
+axes = np.linalg.svd(centered, full_matrices=False)[2]
+local = centered @ axes.T
+length = np.ptp(local[:, 0])
+local[:, 1] += 0.25 * length * (local[:, 0] / length) ** 2
+angle = 0.7
+rotation = np.array([[np.cos(angle), -np.sin(angle), 0], [np.sin(angle), np.cos(angle), 0], [0, 0, 1]])
+bent = (local @ axes) @ rotation.T
+scale = np.sqrt(surface_area(bent, faces))
+
+# File source, numpy target; the refined map by default.
+result = register(hand, (bent, faces), resolution=128)
+n = len(vertices)
+assert result.mapped_points.shape == (n, 3) and result.barycentric.shape == (n, 3)
+assert result.target_vertices.shape == (n, 3) and result.target_triangle.shape == (n,)
+assert np.array_equal(result.source_vertex, np.arange(n)), "rows are not in the source's vertex order"
+assert np.allclose(result.barycentric.sum(axis=1), 1.0, atol=1e-9)
+assert result.transform.shape == (3, 3)
+assert abs(abs(np.linalg.det(result.transform)) - 1) < 1e-9
+assert "RefinementOrthogonalityResidual" in result.quality, result.quality
+assert "RegistrationError" in result.quality and "SourceMeanQuasiConformalDistortion" in result.quality
+refined_error = np.linalg.norm(result.mapped_points - bent, axis=1).mean() / scale
+print(f"refined map: mean error {refined_error:.4f} of sqrt(area); {result!r}")
+assert refined_error < 0.03, f"refined map error {refined_error:.4f} of sqrt(area)"
+
+# The mapped points lie on the target: the barycentric combination of the corners.
+corners = bent[result.target_vertices]
+assert np.allclose(np.einsum("ij,ijk->ik", result.barycentric, corners), result.mapped_points, atol=1e-6 * scale)
+
+# transfer(): a linear function of position is reproduced exactly at the mapped points,
+# with one component or several.
+coefficients = np.array([[0.3, -1.2, 2.0], [1.0, 0.5, -0.25]])
+linear = bent @ coefficients.T + np.array([4.0, -2.0])
+transferred = result.transfer(linear)
+assert transferred.shape == (n, 2)
+assert np.allclose(transferred, result.mapped_points @ coefficients.T + np.array([4.0, -2.0]), atol=1e-6 * scale)
+assert np.allclose(result.transfer(linear[:, 0]), transferred[:, 0])
+# ... and carries the target's vertex numbers' positions back to the source's: near the truth.
+assert np.linalg.norm(result.transfer(bent) - bent, axis=1).mean() / scale < 0.03
+try:
+    result.transfer(linear[:-1])
+    raise AssertionError("transfer() accepted values for the wrong number of vertices")
+except ValueError as error:
+    assert "one row per target vertex" in str(error)
+
+# The Möbius map alone (vtkDenseCorrespondence), from a vtkPolyData: coarser than refined.
+mobius = register(hand_polydata, (bent, faces), resolution=128, refine=False)
+mobius_error = np.linalg.norm(mobius.mapped_points - bent, axis=1).mean() / scale
+print(f"Möbius map: mean error {mobius_error:.4f} of sqrt(area)")
+assert "RefinementOrthogonalityResidual" not in mobius.quality
+assert mobius_error < 0.25 and refined_error < mobius_error
+
+# Errors: the filter's message, as a Python exception.
+open_faces = faces[1:]  # one triangle removed: a hole
+try:
+    register((vertices, open_faces), hand, resolution=64, refine=False)
+    raise AssertionError("an open mesh was registered")
+except RegistrationError as error:
+    print("open mesh:", error)
+    assert "source" in str(error) and "vtkSphericalConformalMap" in str(error), error
+genus_two = os.path.join(mesh_dir, "eight.off")
+try:
+    register(genus_two, hand, resolution=64, refine=False)
+    raise AssertionError("a genus-2 mesh was registered")
+except RegistrationError as error:
+    print("genus 2:", error)
+    assert genus_two in str(error) and "genus" in str(error).lower(), error
+try:
+    register(os.path.join(mesh_dir, "no-such-mesh.off"), hand)
+    raise AssertionError("a missing file was registered")
+except RegistrationError as error:
+    assert "no-such-mesh.off" in str(error), error
+for bad_call, expected in ((lambda: register(hand, hand, resolutoin=64), TypeError),
+                           (lambda: register(hand, hand, transform="shear"), ValueError),
+                           (lambda: register(hand, (vertices, faces[:, :2])), ValueError),
+                           (lambda: register(42, hand), TypeError)):
+    try:
+        bad_call()
+        raise AssertionError(f"no {expected.__name__}")
+    except expected:
+        pass
+
+# Meshes too small for the refinement's basis: the Möbius map, with a warning.
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    small = register(hand, hand, resolution=64, basis_size=1000)
+assert any("refinement is skipped" in str(w.message) for w in caught)
+assert "RefinementOrthogonalityResidual" not in small.quality
+print("register() checks passed")
