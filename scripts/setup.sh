@@ -7,6 +7,9 @@
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# Paths below the checkout are hashed relative to it, so a second clone (CI's) reuses
+# the compiler cache of the first.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
 build="${MOBIUS_BUILD_DIR:-$root/build}"
 
 # --- 1. Debian packages ------------------------------------------------------------
