@@ -83,6 +83,22 @@ std::string Refinement(vtkPolyData* refined, bool done)
   return out.str();
 }
 
+// "stages": [{"name", "seconds"}...], "total_seconds": their sum.
+std::string StageTimes(const std::vector<StageTiming>& stages)
+{
+  std::ostringstream json;
+  json << "\"stages\": [";
+  double total = 0;
+  for (size_t s = 0; s < stages.size(); ++s)
+  {
+    json << (s ? ", " : "") << "{\"name\": " << Quoted(stages[s].Name)
+         << ", \"seconds\": " << Number(stages[s].Seconds) << "}";
+    total += stages[s].Seconds;
+  }
+  json << "],\n  \"total_seconds\": " << Number(total);
+  return json.str();
+}
+
 std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
 {
   std::ostringstream out;
@@ -133,15 +149,7 @@ std::string JsonSummary(const std::string& source, const std::string& target,
        << ",\n  \"target_map\": " << MapQuality(result.TargetMap, result.TargetCentered)
        << ",\n  \"clamped_points\": " << Number(FieldValue(result.MobiusCorrespondence, "ClampedPoints"))
        << ",\n  \"refinement\": " << Refinement(result.Correspondence, result.Correspondence != result.MobiusCorrespondence)
-       << ",\n  \"stages\": [";
-  double total = 0;
-  for (size_t s = 0; s < result.Stages.size(); ++s)
-  {
-    json << (s ? ", " : "") << "{\"name\": " << Quoted(result.Stages[s].Name)
-         << ", \"seconds\": " << Number(result.Stages[s].Seconds) << "}";
-    total += result.Stages[s].Seconds;
-  }
-  json << "],\n  \"total_seconds\": " << Number(total) << ",\n  \"outputs\": {\"mesh\": "
+       << ",\n  " << StageTimes(result.Stages) << ",\n  \"outputs\": {\"mesh\": "
        << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath)
        << ", \"picture\": " << (outputs.PicturePath.empty() ? "null" : Quoted(outputs.PicturePath))
        << "}";
@@ -188,15 +196,7 @@ std::string SymmetryJsonSummary(
   }
   json << "],\n  \"map\": " << MapQuality(result.SourceMap, symmetry)
        << ",\n  \"refinement\": " << Refinement(symmetry, FieldValue(symmetry, "SymmetryRefined") == 1)
-       << ",\n  \"stages\": [";
-  double total = 0;
-  for (size_t s = 0; s < result.Stages.size(); ++s)
-  {
-    json << (s ? ", " : "") << "{\"name\": " << Quoted(result.Stages[s].Name)
-         << ", \"seconds\": " << Number(result.Stages[s].Seconds) << "}";
-    total += result.Stages[s].Seconds;
-  }
-  json << "],\n  \"total_seconds\": " << Number(total) << ",\n  \"outputs\": {\"mesh\": "
+       << ",\n  " << StageTimes(result.Stages) << ",\n  \"outputs\": {\"mesh\": "
        << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath) << "}\n}\n";
   return json.str();
 }

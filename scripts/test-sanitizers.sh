@@ -31,6 +31,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}"
 build="${MOBIUS_SANITIZER_BUILD_DIR:-$root/build-sanitizers}"
 fuzz_seconds="${MOBIUS_FUZZ_SECONDS:-60}"
+# A fixed seed makes the CI minute the same sequence of inputs on every run (a failure
+# replays; a slower machine runs a prefix of it); MOBIUS_FUZZ_SEED=0 picks one at random.
+fuzz_seed="${MOBIUS_FUZZ_SEED:-20181}"
 start=$SECONDS
 
 # --- 1. Debian packages ------------------------------------------------------------
@@ -114,7 +117,7 @@ mkdir -p "$fuzz/corpus" "$fuzz/artifacts"
 # The fuzzer's reports go to the terminal, with its own.
 export ASAN_OPTIONS="$asan_options" UBSAN_OPTIONS="$ubsan_options"
 "$build/bin/mobius-fuzz-mesh" "$fuzz/corpus" "$root/Testing/Fuzz/Corpus" \
-  -max_total_time="$fuzz_seconds" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
+  -max_total_time="$fuzz_seconds" -seed="$fuzz_seed" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
   -artifact_prefix="$fuzz/artifacts/" -print_final_stats=1 || {
   echo "test-sanitizers: the fuzzer found a bug; the input is in $fuzz/artifacts"
   echo "  (replay: $build/bin/mobius-fuzz-mesh FILE; once fixed, add it to Testing/Fuzz/Regressions)"
