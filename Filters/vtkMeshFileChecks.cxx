@@ -124,8 +124,10 @@ public:
       }
       // A float out of range is infinite (or, below the smallest, zero), reported by the
       // NaN check as such; an integer out of range cannot be represented at all.
-      this->Malformed =
-        end == token.c_str() || *end != '\0' || (errno == ERANGE && type.IsInteger);
+      // The whole token must be the number: a NUL byte inside it would end the C string
+      // early and pass here, and VTK's ASCII PLY parser segfaults on it (found by the fuzzer).
+      this->Malformed = end == token.c_str() || end != token.c_str() + token.size() ||
+        (errno == ERANGE && type.IsInteger);
       return !this->Malformed;
     }
     unsigned char bytes[8];
