@@ -7,25 +7,15 @@ import json
 import math
 import os
 import shutil
-import subprocess
 import sys
+
+from cli_harness import Harness
 
 program, mesh_dir, work = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
-failures = []
-
-
-def check(condition, message):
-    if not condition:
-        failures.append(message)
-        print("FAILED:", message)
-
-
-def run(*arguments):
-    result = subprocess.run([program, *arguments], cwd=work, capture_output=True, text=True,
-                            errors="replace", timeout=600)
-    return result.returncode, result.stdout, result.stderr
+harness = Harness(program, work)
+run, check = harness.run, harness.check
 
 
 # A UV sphere whose rings i and R - i are exact mirror images under z -> -z, bent into an egg
@@ -134,7 +124,4 @@ for arguments, words in ((["--symmetry", "egg.off", "egg.off", "-o", "x"], "one 
     check(code == 2 and words in err, f"{arguments}: exit {code}, {err!r}")
 check(not os.path.exists(os.path.join(work, "x.vtp")), "no output after a usage error")
 
-if failures:
-    print(f"{len(failures)} failure(s)")
-    sys.exit(1)
-print("all symmetry command-line checks passed")
+harness.finish()
