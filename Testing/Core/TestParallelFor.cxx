@@ -1,11 +1,14 @@
 // ParallelFor: every index runs once; an exception thrown in a worker thread reaches the
 // caller (instead of std::terminate), with its type and message, after all threads joined.
+// ResolveThreadCount: the automatic count follows the CPU affinity mask and
+// VTK_SMP_MAX_THREADS.
 #include "CoreTest.h"
 #include "ParallelFor.h"
 #include "SphericalAreaGrid.h"
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -128,10 +131,56 @@ void RasterizerPassesExceptions()
   }
   MOBIUS_CHECK(caught);
 }
+
+// Run with the process pinned to one core and with VTK_SMP_MAX_THREADS set: "automatic"
+// must follow both (an MPI rank bound to its cores must not start one thread per core of
+// the node); an explicit request is always kept.
+void AutomaticThreadCount()
+{
+  MOBIUS_CHECK(ResolveThreadCount(3) == 3);
+  unsetenv("VTK_SMP_MAX_THREADS");
+  const int available = AvailableCoreCount();
+  MOBIUS_CHECK(available >= 1);
+  MOBIUS_CHECK(ResolveThreadCount(0) == available);
+
+  setenv("VTK_SMP_MAX_THREADS", "1", 1);
+  MOBIUS_CHECK(ResolveThreadCount(0) == 1);
+  MOBIUS_CHECK(ResolveThreadCount(2) == 2);
+  setenv("VTK_SMP_MAX_THREADS", "1000", 1);
+  MOBIUS_CHECK(ResolveThreadCount(0) == available);
+  for (const char* ignored : { "", "0", "-2", "two", "3x" })
+  {
+    setenv("VTK_SMP_MAX_THREADS", ignored, 1);
+    MOBIUS_CHECK(ResolveThreadCount(0) == available);
+  }
+  unsetenv("VTK_SMP_MAX_THREADS");
+
+#ifdef __linux__
+  cpu_set_t saved;
+  CPU_ZERO(&saved);
+  MOBIUS_CHECK(sched_getaffinity(0, sizeof(saved), &saved) == 0);
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+  {
+    if (CPU_ISSET(cpu, &saved))
+    {
+      CPU_SET(cpu, &one);
+      break;
+    }
+  }
+  MOBIUS_CHECK(sched_setaffinity(0, sizeof(one), &one) == 0);
+  MOBIUS_CHECK(AvailableCoreCount() == 1);
+  MOBIUS_CHECK(ResolveThreadCount(0) == 1);
+  MOBIUS_CHECK(sched_setaffinity(0, sizeof(saved), &saved) == 0);
+  MOBIUS_CHECK(AvailableCoreCount() == available);
+#endif
+}
 }
 
 int main()
 {
+  AutomaticThreadCount();
   EveryIndexOnce();
   WorkerExceptionReachesCaller(std::runtime_error("worker failed"), "worker failed");
   WorkerExceptionReachesCaller(std::bad_alloc(), "");

@@ -11,21 +11,55 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 namespace mobius
 {
-/// 0 (or less) means one thread per hardware core.
+/// The cores this process may run on: its CPU affinity mask (a cpuset, `taskset`, or an MPI
+/// launcher binding each rank to its share), not every core of the machine, which
+/// std::thread::hardware_concurrency reports.
+inline int AvailableCoreCount()
+{
+#ifdef __linux__
+  cpu_set_t cores;
+  CPU_ZERO(&cores);
+  if (sched_getaffinity(0, sizeof(cores), &cores) == 0 && CPU_COUNT(&cores) > 0)
+  {
+    return CPU_COUNT(&cores);
+  }
+#endif
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+/// The thread count for a request: a positive request as given; 0 (or less) means
+/// automatic: one thread per available core, at most VTK_SMP_MAX_THREADS when that
+/// environment variable holds a positive number (the limit VTK's own threaded filters
+/// honour, so one setting governs both).
 inline int ResolveThreadCount(int requested)
 {
   if (requested > 0)
   {
     return requested;
   }
-  return std::max(1u, std::thread::hardware_concurrency());
+  int threads = AvailableCoreCount();
+  if (const char* limit = std::getenv("VTK_SMP_MAX_THREADS"))
+  {
+    char* end = nullptr;
+    const long value = std::strtol(limit, &end, 10);
+    if (end != limit && *end == '\0' && value > 0)
+    {
+      threads = static_cast<int>(std::min<long>(threads, value));
+    }
+  }
+  return std::max(1, threads);
 }
 
 template <typename Work>

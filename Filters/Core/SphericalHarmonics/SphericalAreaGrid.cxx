@@ -42,7 +42,6 @@
 #include <atomic>
 #include <cmath>
 #include <sstream>
-#include <thread>
 
 namespace mobius
 {
@@ -662,8 +661,7 @@ bool RasterizeSphericalAreas(const Points& spherePoints, const Triangles& triang
   }
 
   const Eigen::Index triangleCount = triangles.rows();
-  int threads = numberOfThreads > 0 ? numberOfThreads
-                                    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int threads = ResolveThreadCount(numberOfThreads);
   threads = static_cast<int>(std::max<Eigen::Index>(1, std::min<Eigen::Index>(threads, triangleCount / 1024 + 1)));
   std::vector<Accumulator> accumulators;
   accumulators.reserve(threads);

@@ -23,7 +23,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
 namespace mobius
 {
@@ -65,10 +64,7 @@ SphericalHarmonicTransform::SphericalHarmonicTransform(int bandwidth, int number
   {
     throw std::invalid_argument("SphericalHarmonicTransform: bandwidth must be at least 1");
   }
-  if (this->NumberOfThreads <= 0)
-  {
-    this->NumberOfThreads = std::max(1u, std::thread::hardware_concurrency());
-  }
+  this->NumberOfThreads = ResolveThreadCount(this->NumberOfThreads);
   const int n = 2 * bandwidth;
   this->Weights = QuadratureWeights(n);
   this->Cosines.resize(bandwidth);

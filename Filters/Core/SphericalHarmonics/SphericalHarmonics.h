@@ -37,7 +37,7 @@ struct SphericalHarmonicCoefficients
 class SphericalHarmonicTransform
 {
 public:
-  /// bandwidth >= 1; numberOfThreads = 0 means std::thread::hardware_concurrency().
+  /// bandwidth >= 1; numberOfThreads = 0 means automatic (ResolveThreadCount).
   explicit SphericalHarmonicTransform(int bandwidth, int numberOfThreads = 0);
   ~SphericalHarmonicTransform();
   SphericalHarmonicTransform(const SphericalHarmonicTransform&) = delete;
