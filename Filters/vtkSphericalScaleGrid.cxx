@@ -209,6 +209,9 @@ int vtkSphericalScaleGrid::ComputeOutput(
   mobius::vtk::SetFieldValue(fieldData, "TotalArea", signal.Grid.TotalArea);
   mobius::vtk::SetFieldValue(fieldData, "SmoothingTime", this->SmoothingTime);
   mobius::vtk::SetFieldValue(fieldData, "ValueMode", this->ValueMode);
+  const std::vector<double> energies = mobius::DegreeEnergies(signal.Coefficients);
+  mobius::vtk::SetFieldValues(
+    fieldData, "DegreeEnergies", energies.data(), static_cast<int>(energies.size()));
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -18,7 +18,10 @@
  * elsewhere; cell j*N + i is grid cell (j, i)) with cell data `ConformalFactor` (the cell
  * values) and `ConformalFactorSmoothed` (the low-passed signal at the cell centers), and
  * field data `Resolution`, `Bandwidth`, `TotalArea` (the surface area, equal to the sum of
- * lambda times cell area), `SmoothingTime`, `ValueMode` (0: lambda, 1: sqrt(lambda)). With
+ * lambda times cell area), `SmoothingTime`, `ValueMode` (0: lambda, 1: sqrt(lambda)) and
+ * `DegreeEnergies` (B values: the smoothed signal's energy in each spherical-harmonic
+ * degree l, the sum over m of |f_lm|^2; unchanged by rotating or mirroring the map, so
+ * shapes can be compared by it before any alignment). With
  * DisplaceByValue each point is moved radially to |smoothed value| / max |smoothed value|
  * (the corner value being the mean of the adjacent cells), the picture of Figure 6.
  *

@@ -27,6 +27,19 @@ void SmoothWithHeatKernel(SphericalHarmonicCoefficients& coefficients, double ti
   }
 }
 
+std::vector<double> DegreeEnergies(const SphericalHarmonicCoefficients& coefficients)
+{
+  std::vector<double> energies(static_cast<std::size_t>(coefficients.Bandwidth), 0.0);
+  for (int l = 0; l < coefficients.Bandwidth; ++l)
+  {
+    for (int m = -l; m <= l; ++m)
+    {
+      energies[l] += std::norm(coefficients(l, m));
+    }
+  }
+  return energies;
+}
+
 std::complex<double> EvaluateSphericalHarmonicSeries(
   const SphericalHarmonicCoefficients& coefficients, double theta, double phi)
 {

@@ -73,6 +73,12 @@ private:
 /// Heat-kernel low pass: f_lm *= exp(-t l(l+1)).
 void SmoothWithHeatKernel(SphericalHarmonicCoefficients& coefficients, double time);
 
+/// The energy of each degree, E_l = sum over m of |f_lm|^2, l = 0 .. Bandwidth-1: the
+/// function's power spectrum. A rotation (or reflection) of the sphere mixes the
+/// coefficients only within a degree, unitarily, so E_l does not change: a descriptor of a
+/// centered map that needs no alignment (their sum is the integral of f^2).
+std::vector<double> DegreeEnergies(const SphericalHarmonicCoefficients& coefficients);
+
 /// Direct evaluation of sum f_lm Y_lm at one point (all m, negative ones included), O(B^2).
 /// Slow; for tests and sub-grid checks.
 std::complex<double> EvaluateSphericalHarmonicSeries(
