@@ -1,0 +1,493 @@
+"""Correspondences across a collection of shapes, over MPI ranks, with cached per-shape work.
+
+Usage (K ranks of ParaView's MPI engine, or one process without mpiexec):
+    mpiexec -n K pvbatch --mpi --symmetric register_collection.py \
+        --plugin BUILD/lib/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so \
+        --output RESULTS [--mode all|template|nearest] MESH [MESH ...]
+    pvbatch register_collection.py --plugin ... --output RESULTS MESH [MESH ...]
+
+Per shape, once: the conformal map, its Möbius centering and a rotation-invariant descriptor
+(the energy of each spherical-harmonic degree of the scale factors, vtkSphericalScaleGrid's
+DegreeEnergies). They are cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
+and of the parameters, so a rerun, or a run with meshes added, redoes only what is new; pair
+results are cached the same way. Ranks take shapes, then pairs, one at a time from a shared
+counter (dynamic balancing: large meshes do not hold the others up); each rank gets its share
+of the cores (VTK_SMP_MAX_THREADS).
+
+Modes: `all` registers every pair; `template` every mesh to --template; `nearest` only each
+shape's --neighbours nearest shapes by descriptor, for collections too large for all pairs.
+
+Outputs in RESULTS:
+- shapes.csv: per mesh, its hash, vertices, status and error (a mesh that cannot be mapped
+  is recorded there and does not stop the others), seconds and rank;
+- pairs.csv: per pair, the transform, determinant, correlation score and coefficient,
+  registration error, the refined map's orthogonality residual, distance, seconds, rank;
+- distances.csv and distances.png: the symmetric matrix of registration distances
+  d = sqrt((1 - rho) / 2), rho the correlation coefficient of the aligned scale-factor
+  signals (0: identical up to a conformal change; about 0.7: unrelated), rows and columns
+  ordered by an average-linkage clustering (blank or black: pair not registered);
+- run.json: what was computed and what came from the cache;
+- with --write-maps, maps/SOURCE-to-TARGET.vtp (Dense Correspondence's data contract).
+"""
+import argparse
+import csv
+import hashlib
+import json
+import math
+import os
+import sys
+import time
+
+import numpy
+
+parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+parser.add_argument("--plugin", help="path of MobiusRegistration.so in a build tree (finds the Python package "
+                    "beside it; not needed when the package is installed)")
+parser.add_argument("--output", required=True, help="results folder (its cache is reused)")
+parser.add_argument("--mode", choices=("all", "template", "nearest"), default="all")
+parser.add_argument("--template", help="with --mode template: the mesh every other one is registered to")
+parser.add_argument("--neighbours", type=int, default=10, help="with --mode nearest: k (default 10)")
+parser.add_argument("--resolution", type=int, default=128, help="SO3 Register resolution (default 128)")
+parser.add_argument("--refine", choices=("spectral", "none"), default="spectral",
+                    help="refine each pair's map (default) or keep the Möbius map")
+parser.add_argument("--write-maps", action="store_true", help="also write each pair's dense map")
+parser.add_argument("--threads", type=int, default=0,
+                    help="threads per rank (default 0: this rank's share of the cores)")
+parser.add_argument("--max-failures", type=int, default=0,
+                    help="exit with status 1 when more meshes or pairs than this fail (default 0)")
+parser.add_argument("meshes", nargs="+")
+args = parser.parse_args()
+
+try:
+    from mpi4py import MPI
+    comm = MPI.COMM_WORLD
+except ImportError:  # one process without MPI
+    MPI = comm = None
+rank = comm.Get_rank() if comm else 0
+size = comm.Get_size() if comm else 1
+
+
+def fail(message):
+    if rank == 0:
+        print(f"register_collection: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+if args.mode == "template" and not args.template:
+    fail("--mode template needs --template MESH")
+if args.neighbours < 1:
+    fail("--neighbours must be at least 1")
+if args.resolution < 4 or args.resolution % 2:
+    fail("--resolution must be even and at least 4")
+for path in args.meshes + ([args.template] if args.template else []):
+    if not os.path.isfile(path):
+        fail(f"{path}: no such file")
+
+if args.plugin:
+    # The filters' Python package sits beside the plugin: from <libdir>/paraview-5.11/plugins/
+    # MobiusRegistration/ up to the folder holding python3/dist-packages.
+    folder = os.path.dirname(os.path.abspath(args.plugin))
+    for _ in range(5):
+        folder = os.path.dirname(folder)
+        candidate = os.path.join(folder, "python3", "dist-packages")
+        if os.path.isdir(os.path.join(candidate, "mobiusregistration")):
+            sys.path.insert(0, candidate)
+            break
+
+
+def share_of_cores():
+    """Threads for this rank: its CPU affinity (a launcher that binds ranks has already split
+    the cores), otherwise the node's cores divided among the ranks on the node."""
+    available = len(os.sched_getaffinity(0))
+    ranks_here = comm.Split_type(MPI.COMM_TYPE_SHARED).Get_size() if comm else 1
+    return max(1, min(available, (os.cpu_count() or available) // ranks_here))
+
+
+# The core's automatic thread count honours VTK_SMP_MAX_THREADS; set before any filter runs.
+threads = args.threads if args.threads > 0 else share_of_cores()
+os.environ["VTK_SMP_MAX_THREADS"] = str(threads)
+
+from mobiusregistration import (  # noqa: E402
+    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register,
+    vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
+from vtkmodules.vtkCommonCore import vtkCommand, vtkLookupTable, vtkUnsignedCharArray  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter  # noqa: E402
+
+# What a cached result depends on besides the mesh (bump the version when the computation
+# changes so that old caches are not reused).
+SHAPE_PARAMETERS = {"version": 1, "descriptor_resolution": 64}
+PAIR_PARAMETERS = {"version": 1, "resolution": args.resolution, "refine": args.refine}
+DESCRIPTOR_DEGREES = 16
+
+
+class Errors:
+    """Collects the error messages of the filters it watches (instead of VTK printing them)."""
+
+    def __init__(self):
+        self.messages = []
+
+    def watch(self, algorithm):
+        algorithm.AddObserver(vtkCommand.ErrorEvent, self._record)
+        # The executive's "returned failure" only repeats the filter's error.
+        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda obj, event: None)
+        return algorithm
+
+    def _record(self, obj, event, message=None):
+        self.messages.append(str(message).split("): ", 1)[-1].strip() if message else "error")
+    _record.CallDataType = "string0"
+
+
+def digest(*parts):
+    h = hashlib.sha256()
+    for part in parts:
+        h.update(part if isinstance(part, bytes) else json.dumps(part, sort_keys=True).encode())
+    return h.hexdigest()
+
+
+def file_digest(path):
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            h.update(block)
+    return h.hexdigest()
+
+
+def write_json_atomically(path, value):
+    # Written beside and renamed: a run killed mid-write leaves no half file in the cache.
+    partial = f"{path}.{rank}.partial"
+    with open(partial, "w") as f:
+        json.dump(value, f, indent=1)
+    os.replace(partial, path)
+
+
+def write_polydata(data, path):
+    writer = vtkXMLPolyDataWriter()
+    writer.SetInputData(data)
+    writer.SetDataModeToBinary()  # bookworm's expat cannot read VTK 9.2's appended data back
+    partial = f"{path}.{rank}.partial.vtp"
+    writer.SetFileName(partial)
+    if writer.Write() != 1:
+        raise OSError(f"cannot write {path}")
+    os.replace(partial, path)
+
+
+def read_polydata(path):
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def field_value(data, name, component=0):
+    array = data.GetFieldData().GetArray(name)
+    return array.GetComponent(0, component) if array else float("nan")
+
+
+def dynamic_for(count, cost, work):
+    """Runs work(i) for i in range(count) over all ranks and returns every result on every
+    rank. Tasks go out from a counter on rank 0 that each rank increments atomically (MPI
+    one-sided Fetch_and_op), costliest first, so no rank waits on another's long task."""
+    order = sorted(range(count), key=lambda i: -cost[i])
+    results = {}
+    if size == 1:
+        for i in order:
+            results[i] = work(i)
+        return results
+    window = MPI.Win.Allocate(8 if rank == 0 else 0, 8, comm=comm)
+    if rank == 0:
+        numpy.frombuffer(window.tomemory(), dtype="i8")[0] = 0
+    comm.Barrier()
+    one, taken = numpy.ones(1, dtype="i8"), numpy.zeros(1, dtype="i8")
+    while True:
+        window.Lock(0)
+        window.Fetch_and_op(one, taken, 0, 0, MPI.SUM)
+        window.Unlock(0)
+        if taken[0] >= count:
+            break
+        i = order[int(taken[0])]
+        results[i] = work(i)
+    comm.Barrier()
+    window.Free()
+    merged = {}
+    for part in comm.allgather(results):
+        merged.update(part)
+    return merged
+
+
+# --- names and paths -----------------------------------------------------------------------
+meshes = list(dict.fromkeys(os.path.abspath(p) for p in args.meshes))
+if args.template:
+    template_path = os.path.abspath(args.template)
+    if template_path not in meshes:
+        meshes.insert(0, template_path)
+names = []
+for path in meshes:
+    name = os.path.splitext(os.path.basename(path))[0]
+    names.append(name if name not in names else f"{name}-{len(names)}")
+cache = os.path.join(args.output, "cache")
+if rank == 0:
+    for folder in ("shapes", "pairs"):
+        os.makedirs(os.path.join(cache, folder), exist_ok=True)
+    if args.write_maps:
+        os.makedirs(os.path.join(args.output, "maps"), exist_ok=True)
+if comm:
+    comm.Barrier()
+started = time.perf_counter()
+
+
+# --- per shape: centered map and descriptor -------------------------------------------------
+def shape_key(path):
+    return digest(file_digest(path).encode(), SHAPE_PARAMETERS)
+
+
+keys = [shape_key(p) for p in meshes] if rank == 0 else None
+keys = comm.bcast(keys, root=0) if comm else keys
+
+
+def shape_files(i):
+    base = os.path.join(cache, "shapes", keys[i])
+    return base + ".json", base + ".vtp"
+
+
+def map_shape(i):
+    record_path, map_path = shape_files(i)
+    if os.path.isfile(record_path):
+        with open(record_path) as f:
+            record = json.load(f)
+        if record["status"] != "ok" or os.path.isfile(map_path):
+            record["cached"] = True
+            return record
+    begin = time.perf_counter()
+    errors = Errors()
+    reader = errors.watch(vtkSurfaceMeshReader())
+    reader.SetFileName(meshes[i])
+    conformal = errors.watch(vtkSphericalConformalMap())
+    conformal.SetInputConnection(reader.GetOutputPort())
+    center = errors.watch(vtkMobiusCenter())
+    center.SetInputConnection(conformal.GetOutputPort())
+    grid = errors.watch(vtkSphericalScaleGrid())
+    grid.SetInputConnection(center.GetOutputPort())
+    grid.SetResolution(SHAPE_PARAMETERS["descriptor_resolution"])
+    grid.Update()
+    record = {"status": "failed", "error": "", "vertices": 0, "energies": [], "rank": rank}
+    mapped = conformal.GetOutput()
+    if errors.messages or center.GetOutput().GetNumberOfPoints() == 0:
+        record["error"] = "; ".join(errors.messages) or "no output"
+    elif field_value(mapped, "DegenerateMap") == 1:
+        # A degenerate map (flips left, collapsed area, no convergence) would give meaningless
+        # correspondences: a failure, with the filter's reason.
+        reason = mapped.GetFieldData().GetAbstractArray("DegenerateMapReason")
+        record["error"] = "degenerate conformal map: " + (reason.GetValue(0) if reason else "unknown reason")
+    else:
+        energies = grid.GetOutput().GetFieldData().GetArray("DegreeEnergies")
+        record.update(status="ok", vertices=center.GetOutput().GetNumberOfPoints(),
+                      energies=[energies.GetValue(l) for l in range(min(DESCRIPTOR_DEGREES, energies.GetNumberOfValues()))])
+        write_polydata(center.GetOutput(), map_path)
+    record["seconds"] = time.perf_counter() - begin
+    write_json_atomically(record_path, record)
+    record["cached"] = False
+    return record
+
+
+sizes = [os.path.getsize(p) for p in meshes]
+shapes = dynamic_for(len(meshes), sizes, map_shape)
+ok = [i for i in range(len(meshes)) if shapes[i]["status"] == "ok"]
+
+
+# --- which pairs ---------------------------------------------------------------------------
+def descriptor(i):
+    """Degree energies over their sum, square-rooted: a unit vector, blind to size, rotation
+    and mirroring; the Euclidean distance between two is a Hellinger-type distance."""
+    energies = numpy.array(shapes[i]["energies"])
+    return numpy.sqrt(energies / energies.sum())
+
+
+if args.mode == "all":
+    pairs = [(ok[a], ok[b]) for a in range(len(ok)) for b in range(a + 1, len(ok))]
+elif args.mode == "template":
+    template = meshes.index(template_path)
+    if template not in ok:
+        if rank == 0:
+            print(f"{meshes[template]}: {shapes[template]['error']}", file=sys.stderr)
+        sys.exit(1)
+    pairs = [(i, template) for i in ok if i != template]
+else:
+    chosen = set()
+    for i in ok:
+        others = sorted((numpy.linalg.norm(descriptor(i) - descriptor(j)), j) for j in ok if j != i)
+        for _, j in others[:args.neighbours]:
+            chosen.add((min(i, j), max(i, j)))
+    pairs = sorted(chosen)
+
+
+def pair_key(pair):
+    return digest(keys[pair[0]].encode(), keys[pair[1]].encode(), PAIR_PARAMETERS)
+
+
+def register_pair(p):
+    source, target = pairs[p]
+    record_path = os.path.join(cache, "pairs", pair_key(pairs[p]) + ".json")
+    map_path = os.path.join(args.output, "maps", f"{names[source]}-to-{names[target]}.vtp")
+    if os.path.isfile(record_path) and (not args.write_maps or os.path.isfile(map_path)):
+        with open(record_path) as f:
+            record = json.load(f)
+        record["cached"] = True
+        return record
+    begin = time.perf_counter()
+    errors = Errors()
+    source_map = read_polydata(shape_files(source)[1])
+    target_map = read_polydata(shape_files(target)[1])
+    registration = errors.watch(vtkSO3Register())
+    registration.SetSourceData(source_map)
+    registration.SetTargetData(target_map)
+    registration.SetResolution(args.resolution)
+    correspondence = errors.watch(vtkCorrespondenceRefinement() if args.refine == "spectral"
+                                  else vtkDenseCorrespondence())
+    correspondence.SetSourceConnection(registration.GetOutputPort())
+    correspondence.SetTargetData(target_map)
+    correspondence.Update()
+    result = correspondence.GetOutput()
+    record = {"status": "failed", "error": "", "rank": rank}
+    if errors.messages or result.GetNumberOfPoints() == 0:
+        record["error"] = "; ".join(errors.messages) or "no output"
+    else:
+        fields = registration.GetOutput()
+        rho = field_value(fields, "CorrelationCoefficient")
+        record.update(
+            status="ok",
+            transform=[field_value(fields, "Rotation", k) for k in range(9)],
+            determinant=field_value(fields, "Determinant"),
+            correlation_score=field_value(fields, "CorrelationScore"),
+            correlation_coefficient=rho,
+            registration_error=field_value(fields, "RegistrationError"),
+            orthogonality_residual=field_value(result, "RefinementOrthogonalityResidual"),
+            distance=math.sqrt(max(0.0, (1.0 - rho) / 2.0)))
+        if args.write_maps:
+            write_polydata(result, map_path)
+    record["seconds"] = time.perf_counter() - begin
+    if record["status"] == "ok":
+        write_json_atomically(record_path, record)
+    record["cached"] = False
+    return record
+
+
+vertices = [shapes[i]["vertices"] for i in range(len(meshes))]
+results = dynamic_for(len(pairs), [vertices[s] * vertices[t] for s, t in pairs], register_pair)
+
+
+# --- tables and picture (rank 0) -----------------------------------------------------------
+def cluster_order(distances):
+    """Leaf order of an average-linkage clustering (unregistered pairs count as the largest
+    distance), so that similar shapes sit next to each other in the matrix."""
+    d = numpy.where(numpy.isnan(distances), numpy.nanmax(distances) if numpy.isfinite(distances).any() else 1.0,
+                    distances)
+    clusters = {i: [i] for i in range(len(d))}
+    while len(clusters) > 1:
+        ids = sorted(clusters)
+        best = None
+        for a in range(len(ids)):
+            for b in range(a + 1, len(ids)):
+                link = d[numpy.ix_(clusters[ids[a]], clusters[ids[b]])].mean()
+                if best is None or link < best[0]:
+                    best = (link, ids[a], ids[b])
+        _, a, b = best
+        clusters[a] = clusters[a] + clusters.pop(b)
+    return next(iter(clusters.values())) if clusters else []
+
+
+def write_heat_map(distances, path, cell=24):
+    """Each matrix entry as a cell x cell block of pixels: dark blue 0 .. yellow 0.71
+    (sqrt(1/2), unrelated signals); black where no pair was registered. Row 0 at the top."""
+    n = len(distances)
+    table = vtkLookupTable()
+    table.SetRange(0.0, math.sqrt(0.5))
+    table.SetHueRange(0.67, 0.15)
+    table.Build()
+    image = vtkImageData()
+    image.SetDimensions(n * cell, n * cell, 1)
+    colors = vtkUnsignedCharArray()
+    colors.SetNumberOfComponents(3)
+    colors.SetNumberOfTuples(n * cell * n * cell)
+    rgb = [0.0, 0.0, 0.0]
+    for y in range(n * cell):
+        row = n - 1 - y // cell  # VTK images start at the bottom
+        for x in range(n * cell):
+            value = distances[row][x // cell]
+            if math.isnan(value):
+                color = (0, 0, 0)
+            else:
+                table.GetColor(value, rgb)
+                color = tuple(int(255 * c) for c in rgb)
+            colors.SetTuple3(y * n * cell + x, *color)
+    image.GetPointData().SetScalars(colors)
+    writer = vtkPNGWriter()
+    writer.SetInputData(image)
+    writer.SetFileName(path)
+    writer.Write()
+
+
+pair_failures = sum(1 for r in results.values() if r["status"] != "ok")
+shape_failures = len(meshes) - len(ok)
+if rank == 0:
+    with open(os.path.join(args.output, "shapes.csv"), "w", newline="") as f:
+        table = csv.writer(f)
+        table.writerow(["shape", "file", "sha256_key", "vertices", "status", "error", "seconds", "rank", "cached"])
+        for i, path in enumerate(meshes):
+            s = shapes[i]
+            table.writerow([names[i], path, keys[i][:16], s["vertices"], s["status"], s["error"],
+                            f"{s['seconds']:.3f}", s["rank"], int(s["cached"])])
+    with open(os.path.join(args.output, "pairs.csv"), "w", newline="") as f:
+        table = csv.writer(f)
+        table.writerow(["source", "target", "status", "transform", "determinant", "correlation_score",
+                        "correlation_coefficient", "registration_error", "orthogonality_residual",
+                        "distance", "error", "seconds", "rank", "cached"])
+        for p in sorted(range(len(pairs)), key=lambda p: (names[pairs[p][0]], names[pairs[p][1]])):
+            r, (s, t) = results[p], pairs[p]
+            if r["status"] == "ok":
+                numbers = [" ".join(f"{v:.6f}" for v in r["transform"]), f"{r['determinant']:.0f}",
+                           f"{r['correlation_score']:.6g}", f"{r['correlation_coefficient']:.6f}",
+                           f"{r['registration_error']:.6g}", f"{r['orthogonality_residual']:.6g}",
+                           f"{r['distance']:.6f}"]
+            else:
+                numbers = [""] * 7
+            table.writerow([names[s], names[t], r["status"], *numbers, r["error"], f"{r['seconds']:.3f}",
+                            r["rank"], int(r["cached"])])
+    matrix = numpy.full((len(ok), len(ok)), numpy.nan)
+    numpy.fill_diagonal(matrix, 0.0)
+    where = {shape: k for k, shape in enumerate(ok)}
+    for p, (s, t) in enumerate(pairs):
+        if results[p]["status"] == "ok":
+            matrix[where[s], where[t]] = matrix[where[t], where[s]] = results[p]["distance"]
+    order = cluster_order(matrix)
+    ordered = matrix[numpy.ix_(order, order)]
+    with open(os.path.join(args.output, "distances.csv"), "w", newline="") as f:
+        table = csv.writer(f)
+        table.writerow(["shape"] + [names[ok[k]] for k in order])
+        for row, k in enumerate(order):
+            table.writerow([names[ok[k]]] + ["" if numpy.isnan(v) else f"{v:.6f}" for v in ordered[row]])
+    if len(ok) > 0:
+        write_heat_map(ordered.tolist(), os.path.join(args.output, "distances.png"))
+    seconds = time.perf_counter() - started
+    summary = {
+        "ranks": size, "threads_per_rank": threads, "seconds": seconds, "mode": args.mode,
+        "shapes": len(meshes), "shapes_failed": shape_failures,
+        "shapes_computed": sum(1 for s in shapes.values() if not s["cached"]),
+        "pairs": len(pairs), "pairs_failed": pair_failures,
+        "pairs_computed": sum(1 for r in results.values() if not r["cached"]),
+        "shape_seconds": sum(s["seconds"] for s in shapes.values() if not s["cached"]),
+        "pair_seconds": sum(r["seconds"] for r in results.values() if not r["cached"]),
+    }
+    write_json_atomically(os.path.join(args.output, "run.json"), summary)
+    print(f"{len(ok)} of {len(meshes)} shapes mapped ({summary['shapes_computed']} computed), "
+          f"{len(pairs) - pair_failures} of {len(pairs)} pairs registered ({summary['pairs_computed']} computed) "
+          f"on {size} ranks x {threads} threads in {seconds:.1f} s; see {args.output}")
+    for i in range(len(meshes)):
+        if shapes[i]["status"] != "ok":
+            print(f"{meshes[i]}: {shapes[i]['error']}", file=sys.stderr)
+if shape_failures + pair_failures > args.max_failures:
+    if rank == 0:
+        print(f"{shape_failures + pair_failures} failures, more than --max-failures {args.max_failures}",
+              file=sys.stderr)
+    sys.exit(1)
