@@ -486,6 +486,10 @@ if rank == 0:
     for i in range(len(meshes)):
         if shapes[i]["status"] != "ok":
             print(f"{meshes[i]}: {shapes[i]['error']}", file=sys.stderr)
+# Every rank waits for rank 0's tables: a rank leaving early with a failure status would make
+# mpiexec kill rank 0 while it still writes them.
+if comm:
+    comm.Barrier()
 if shape_failures + pair_failures > args.max_failures:
     if rank == 0:
         print(f"{shape_failures + pair_failures} failures, more than --max-failures {args.max_failures}",
