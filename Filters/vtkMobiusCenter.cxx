@@ -109,6 +109,10 @@ int vtkMobiusCenter::ComputeOutput(
 
   output->ShallowCopy(input);
   mobius::vtk::SetPoints(output, points);
+  // The centered map's own distortion (the input's arrays describe the uncentered one),
+  // colored by default by the area it gives each triangle: what centering evens out.
+  // (The output's cell data holds the input's arrays, not the input's cell data object.)
+  mobius::vtk::AddDistortionArrays(output, "LogAreaRatio");
 
   vtkFieldData* fieldData = output->GetFieldData();
   mobius::vtk::SetFieldValue(fieldData, "CenterOfMassNorm", result.CenterOfMassNorm);

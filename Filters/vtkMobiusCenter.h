@@ -17,7 +17,10 @@
  * the sphere with unit weights (mu is then the mean of the points).
  *
  * Output: the input with its points moved by the centering transformation; connectivity and
- * every point, cell and field array are passed through. Field data added:
+ * every point, cell and field array are passed through. Cell data recomputed for the centered
+ * map when the input has `SurfacePoints`: `LogAreaRatio` (the active cell scalars: ParaView's
+ * default coloring) and `QuasiConformalDistortion` (mobius::vtk::AddDistortionArrays).
+ * Field data added:
  * - `CenterOfMassNorm` (1 double): |mu| after centering;
  * - `InitialCenterOfMassNorm` (1 double): |mu| of the input;
  * - `CenteringIterations` (1 double): number of inversions applied;

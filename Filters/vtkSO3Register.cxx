@@ -165,7 +165,7 @@ int vtkSO3Register::ComputeOutput(
     {
       if (this->GetAbortExecute())
       {
-        return 0;
+        return 1; // stopped by the user: an empty output, not an error
       }
     }
     if (!error.empty())
@@ -183,8 +183,18 @@ int vtkSO3Register::ComputeOutput(
   mobius::SO3CorrelationOptions options;
   options.NumberOfCandidates = this->NumberOfCandidates;
   options.Reflections = static_cast<mobius::SO3ReflectionMode>(this->TransformMode);
+  // The correlation (grid search and Newton refinement) is half the work or more at high
+  // Resolution: it reports progress and hears the abort button too.
+  options.Progress = [this](double fraction) {
+    this->UpdateProgress(0.5 + 0.45 * fraction);
+    return !this->GetAbortExecute();
+  };
   const mobius::SO3CorrelationResult result =
     mobius::CorrelateOverRotations(signals[0].Coefficients, signals[1].Coefficients, options);
+  if (result.Aborted || this->GetAbortExecute())
+  {
+    return 1; // stopped by the user: an empty output, not an error
+  }
   this->UpdateProgress(0.95);
   if (result.Candidates.empty() || !result.Transform.allFinite())
   {

@@ -448,6 +448,8 @@ int vtkSphericalConformalMap::ComputeOutput(
     areas->SetValue(t, surfaceAreas[t]);
   }
   output->GetCellData()->AddArray(areas);
+  // Colored by default by how far each triangle is from conformal.
+  mobius::vtk::AddDistortionArrays(output, "QuasiConformalDistortion");
 
   vtkFieldData* fieldData = output->GetFieldData();
   using mobius::vtk::SetFieldValue;

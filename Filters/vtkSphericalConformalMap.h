@@ -25,6 +25,8 @@
  * carrying:
  * - point data `SurfacePoints` (3 doubles): the vertex on the original surface;
  * - cell data `SurfaceArea` (double): the triangle's area on the original surface;
+ * - cell data `QuasiConformalDistortion` (the active cell scalars: ParaView's default
+ *   coloring) and `LogAreaRatio`: each triangle's distortion (mobius::vtk::AddDistortionArrays);
  * - point data `InputPointId` (id type): the index of the point in this filter's input
  *   (for a mesh from vtkSurfaceMeshReader, the vertex number in the file), -1 for a point
  *   FillHoles created. Repairs drop unused points and merge duplicates, so output point i

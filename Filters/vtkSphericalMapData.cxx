@@ -1,5 +1,9 @@
 #include "vtkSphericalMapData.h"
 
+#include "MapDistortion.h"
+
+#include <Eigen/Geometry> // cross
+
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -14,11 +18,13 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <new>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 namespace mobius
 {
@@ -292,6 +298,51 @@ void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* val
 void SetFieldValue(vtkFieldData* fieldData, const char* name, double value)
 {
   SetFieldValues(fieldData, name, &value, 1);
+}
+
+void AddDistortionArrays(vtkPolyData* map, const char* active)
+{
+  Points mapped, surface;
+  Triangles triangles;
+  if (!ExtractPoints(map, mapped).empty() || !ExtractTriangles(map, triangles).empty() ||
+    !ExtractSurfacePoints(map, surface).empty() || surface.rows() != mapped.rows())
+  {
+    return;
+  }
+  const Eigen::Index count = triangles.rows();
+  std::vector<double> surfaceAreas(count), mappedAreas(count);
+  double surfaceTotal = 0, mappedTotal = 0;
+  vtkNew<vtkDoubleArray> quasiConformal;
+  quasiConformal->SetName("QuasiConformalDistortion");
+  quasiConformal->SetNumberOfTuples(count);
+  for (Eigen::Index t = 0; t < count; ++t)
+  {
+    const Eigen::Vector3d p[3] = { surface.row(triangles(t, 0)).transpose(),
+      surface.row(triangles(t, 1)).transpose(), surface.row(triangles(t, 2)).transpose() };
+    const Eigen::Vector3d q[3] = { mapped.row(triangles(t, 0)).transpose(),
+      mapped.row(triangles(t, 1)).transpose(), mapped.row(triangles(t, 2)).transpose() };
+    surfaceAreas[t] = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    mappedAreas[t] = 0.5 * (q[1] - q[0]).cross(q[2] - q[0]).norm();
+    surfaceTotal += surfaceAreas[t];
+    mappedTotal += mappedAreas[t];
+    quasiConformal->SetValue(t, surfaceAreas[t] > 0
+        ? TriangleQuasiConformalDistortion(p[0], p[1], p[2], q[0], q[1], q[2])
+        : 1.0);
+  }
+  vtkNew<vtkDoubleArray> logAreaRatio;
+  logAreaRatio->SetName("LogAreaRatio");
+  logAreaRatio->SetNumberOfTuples(count);
+  for (Eigen::Index t = 0; t < count; ++t)
+  {
+    // Clamped to +-60 (a factor of 1e18): a triangle collapsed to a point has no finite
+    // log; one with no area on either side (0 / 0) counts as keeping its area.
+    const double logRatio =
+      std::log2((mappedAreas[t] / mappedTotal) / (surfaceAreas[t] / surfaceTotal));
+    logAreaRatio->SetValue(t, std::isnan(logRatio) ? 0.0 : std::max(-60.0, std::min(60.0, logRatio)));
+  }
+  map->GetCellData()->AddArray(quasiConformal);
+  map->GetCellData()->AddArray(logAreaRatio);
+  map->GetCellData()->SetActiveScalars(active);
 }
 }
 }

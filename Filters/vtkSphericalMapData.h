@@ -74,6 +74,15 @@ int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);
 
+/// Per-triangle distortion of the map from the surface (point array `SurfacePoints`) to
+/// the output's points, as cell arrays to color the map by: `QuasiConformalDistortion`
+/// (sigma_max / sigma_min of the triangle's linear map, 1 where it is conformal) and
+/// `LogAreaRatio` (log2 of the triangle's share of the sphere over its share of the
+/// surface, 0 where the map keeps area). `active` (one of the two names) becomes the active
+/// cell scalars: ParaView colors a new display by them. Does nothing without SurfacePoints
+/// or triangles.
+void AddDistortionArrays(vtkPolyData* map, const char* active);
+
 /// Adds (or replaces) a named field-data array with one tuple of `count` components.
 void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count);
 void SetFieldValue(vtkFieldData* fieldData, const char* name, double value);

@@ -1,19 +1,82 @@
-"""Runs the macro as the GUI would: two meshes loaded, the source selected."""
+"""Runs the macro twice as the GUI would, and checks the correspondence views it makes.
+
+Usage: pvpython test_macro.py PLUGIN MESH MACRO OUTPUT_DIR
+
+Run 1: the source is a copy of MESH with a point array `Height`, shown colored by it in the
+active view (the user's pick); the target is MESH. Run 2, with the target selected: the
+mesh without arrays becomes the source and is colored by position. Each run must make its
+own layout with three linked views showing the expected objects and coloring arrays, and
+the second run must not count the first run's filters (or labels) as loaded meshes.
+"""
+import os
 import sys
 
-from paraview.simple import GetActiveSource, LoadPlugin, OpenDataFile, SetActiveSource
 from paraview import servermanager
+from paraview.simple import (
+    Calculator, ColorBy, CreateView, Delete, GetActiveSource, GetLayouts, LoadPlugin,
+    OpenDataFile, SaveData, SaveScreenshot, SetActiveSource, SetActiveView, Show)
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-plugin, mesh, macro = sys.argv[1:4]
+plugin, mesh, macro, output = sys.argv[1:5]
+os.makedirs(output, exist_ok=True)
 LoadPlugin(plugin, remote=False, ns=globals())
-source = OpenDataFile(mesh)
+
+# A mesh file with a point array of its own.
+reader = OpenDataFile(mesh)
+height = Calculator(Input=reader, ResultArrayName="Height", Function="coordsY")
+with_height = os.path.join(output, "with_height.vtp")
+SaveData(with_height, proxy=height, DataMode="Binary")
+Delete(height)
+Delete(reader)
+
+source = OpenDataFile(with_height)
 target = OpenDataFile(mesh)
+view = CreateView("RenderView")
+SetActiveView(view)
+ColorBy(Show(source, view), ("POINTS", "Height"))
 SetActiveSource(source)
-exec(open(macro).read(), dict(globals()))
-correspondence = GetActiveSource()
-assert correspondence.GetXMLName() == "RefineCorrespondence", correspondence.GetXMLName()
-result = servermanager.Fetch(correspondence)
-assert result.GetPointData().GetArray("MappedPoints") is not None
-assert result.GetNumberOfPoints() == servermanager.Fetch(source).GetNumberOfPoints()
-print("the macro built the pipeline; error",
-      servermanager.Fetch(correspondence.Source).GetFieldData().GetArray("RegistrationError").GetValue(0))
+
+
+def run_macro():
+    exec(open(macro).read(), dict(globals()))
+    correspondence = GetActiveSource()
+    assert correspondence.GetXMLName() == "RefineCorrespondence", correspondence.GetXMLName()
+    return correspondence
+
+
+def check_layout(number, correspondence, shown_source, array, direct_colors):
+    layouts = [layout for (name, _), layout in GetLayouts().items() if name == f"Mobius correspondence {number}"]
+    assert len(layouts) == 1, list(GetLayouts())
+    views = [layouts[0].GetView(cell) for cell in (1, 5, 6)]  # the macro's cells
+    assert all(v is not None for v in views), views
+    views = [servermanager._getPyProxy(v) for v in views]
+    # The same coloring array on the source and on the mapped source.
+    for view, proxy in ((views[0], shown_source), (views[1], correspondence), (views[2], correspondence.Source)):
+        display = servermanager.GetRepresentation(proxy, view)
+        assert display is not None and display.Visibility, (number, proxy.GetXMLName())
+        assert list(display.ColorArrayName) == ["POINTS", array], (number, list(display.ColorArrayName))
+        assert display.MapScalars == (0 if direct_colors else 1)
+    # Linked cameras: the two surfaces are seen from the same side.
+    assert list(views[0].CameraPosition) == list(views[1].CameraPosition)
+    # The colors are carried, not recomputed: every mapped vertex keeps its source value.
+    shown = servermanager.Fetch(shown_source).GetPointData().GetArray(array)
+    mapped = servermanager.Fetch(correspondence).GetPointData().GetArray(array)
+    assert mapped is not None and (vtk_to_numpy(mapped) == vtk_to_numpy(shown)).all()
+    SaveScreenshot(os.path.join(output, f"macro_{number}.png"), layouts[0], ImageResolution=[1200, 400])
+
+
+first = run_macro()
+check_layout(1, first, source, "Height", False)
+print("run 1: source colored by its Height array in three linked views")
+
+SetActiveSource(target)
+second = run_macro()
+assert second is not first
+# The target was selected: it is the source now, colored by position through a Calculator.
+colored = second.Source.Source.Input.Input  # SO3Register <- MobiusCenter <- conformal map
+assert colored.GetXMLName() == "Calculator" and colored.Input is target
+check_layout(2, second, colored, "PositionColor", True)
+colors = vtk_to_numpy(servermanager.Fetch(colored).GetPointData().GetArray("PositionColor"))
+assert colors.shape[1] == 3 and colors.min() >= 0 and colors.max() <= 1 + 1e-9
+print("run 2: position colors; error",
+      servermanager.Fetch(second.Source).GetFieldData().GetArray("RegistrationError").GetValue(0))

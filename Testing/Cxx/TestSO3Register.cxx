@@ -1,14 +1,19 @@
 // vtkSO3Register: recovers a known rotation and a known reflection between two copies of a
 // centered map; its matrix and Euler angles agree with applying them to points; clear
-// errors for bad inputs.
+// errors for bad inputs; progress and abort during the correlation.
 #include "MobiusTestUtilities.h"
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkExecutive.h"
 #include "vtkPolyDataAlgorithm.h"
 
 #include <Eigen/Dense>
+
+#include <algorithm>
+#include <vector>
 
 namespace
 {
@@ -166,11 +171,75 @@ int TestBadInputs()
   failures += ExpectError(offSphere, map, 16, "not on the unit sphere");
   return failures;
 }
+
+// Progress values seen, and (when AbortAt < 1) the abort button pressed at that fraction.
+struct ProgressLog
+{
+  std::vector<double> Values;
+  double AbortAt = 2.0;
+};
+
+void OnProgress(vtkObject* caller, unsigned long, void* clientData, void* callData)
+{
+  auto* log = static_cast<ProgressLog*>(clientData);
+  const double value = *static_cast<double*>(callData);
+  log->Values.push_back(value);
+  if (value >= log->AbortAt)
+  {
+    vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+  }
+}
+
+int RunWithProgress(vtkPolyData* map, ProgressLog& log)
+{
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceData(map);
+  registration->SetTargetData(map);
+  registration->SetResolution(64);
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(OnProgress);
+  callback->SetClientData(&log);
+  registration->AddObserver(vtkCommand::ProgressEvent, callback);
+  registration->Update();
+  return static_cast<int>(registration->GetOutput()->GetNumberOfPoints());
+}
+
+// The correlation (after the two signals, 0 to 0.5) reports its progress between 0.5 and
+// 0.95, slice by slice of the grid search, and stops when the abort flag is raised there.
+int TestProgressAndAbort()
+{
+  int failures = 0;
+  auto map = CenteredBumpyMap();
+  ProgressLog full;
+  MOBIUS_EXPECT(RunWithProgress(map, full) == map->GetNumberOfPoints());
+  int duringCorrelation = 0;
+  for (double value : full.Values)
+  {
+    duringCorrelation += value > 0.5 && value < 0.95;
+  }
+  MOBIUS_EXPECT(duringCorrelation >= 10);
+  MOBIUS_EXPECT(std::is_sorted(full.Values.begin(), full.Values.end()));
+
+  ProgressLog aborted;
+  aborted.AbortAt = 0.6;
+  MOBIUS_EXPECT(RunWithProgress(map, aborted) == 0);
+  // Stopped within the grid search: after the value that raised the flag, at most one more
+  // slice (the calling thread may already have started the next chunk) and the pipeline's
+  // own final report (1).
+  int after = 0;
+  for (double value : aborted.Values)
+  {
+    after += value > 0.6 && value < 1.0;
+  }
+  MOBIUS_EXPECT(after <= 2);
+  return failures;
+}
 }
 
 int TestSO3Register(int, char*[])
 {
   int failures = TestRecovery();
   failures += TestBadInputs();
+  failures += TestProgressAndAbort();
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <complex>
 #include <cstdlib>
@@ -50,8 +51,9 @@ struct GridPeak
 // around; below β = 0 and above β = π the grid continues as C(α, -β, γ) = C(α+π, β, γ+π)).
 // At β = 0 and π only γ = 0 is scanned: there C depends on α ± γ alone (and the duplicate
 // neighbours within the pole slice are skipped).
+// `next` is called after each slice; false from it ends the scan early.
 void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int keep,
-  std::vector<GridPeak>& peaks)
+  std::vector<GridPeak>& peaks, const std::function<bool()>& next)
 {
   const int B = tensor.GetBandwidth();
   const int M = tensor.GetGridResolution();
@@ -143,6 +145,10 @@ void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int kee
       }
     }
     std::rotate(window, window + 1, window + 3);
+    if (!next())
+    {
+      break;
+    }
   }
   peaks.insert(peaks.end(), heap.begin(), heap.end());
 }
@@ -292,21 +298,45 @@ std::vector<Peak> SelectSeparated(const std::vector<Peak>& peaks, double separat
 
 // Stage 1 for one determinant class: grid search at the coarse bandwidth, Newton on the
 // coarse tensor, and up to `wanted` well-separated peaks, best first.
+// `progress` (fraction of this search) runs on the calling thread; false from it stops the
+// search (`aborted`, no peaks).
 std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
   const SphericalHarmonicCoefficients& target, int bandwidth, bool reflect,
-  const SO3CorrelationOptions& options, int threads, int wanted)
+  const SO3CorrelationOptions& options, int threads, int wanted,
+  const std::function<bool(double)>& progress, bool& aborted)
 {
   SO3CorrelationTensor tensor(source, target, bandwidth, reflect, threads);
   tensor.TransformToBetaSamples();
+  if (!progress(0.2))
+  {
+    aborted = true;
+    return {};
+  }
   const int keep = 8 * wanted + 8;
   const int slices = bandwidth + 1;
   const int chunks = std::min(slices, threads);
   std::vector<std::vector<GridPeak>> found(chunks);
-  ParallelFor(chunks, threads, [&](int chunk, int) {
+  // Progress is reported (and an abort heard) after each slice by the calling thread, the
+  // pool's thread 0; the other threads only count their slices and look at the stop flag.
+  std::atomic<int> scanned(0);
+  std::atomic<bool> stop(false);
+  ParallelFor(chunks, threads, [&](int chunk, int thread) {
     const int first = static_cast<int>(static_cast<long long>(slices) * chunk / chunks);
     const int last = static_cast<int>(static_cast<long long>(slices) * (chunk + 1) / chunks);
-    ScanSlices(tensor, first, last, keep, found[chunk]);
+    ScanSlices(tensor, first, last, keep, found[chunk], [&] {
+      const int done = ++scanned;
+      if (thread == 0 && !progress(0.2 + 0.7 * done / slices))
+      {
+        stop = true;
+      }
+      return !stop;
+    });
   });
+  if (stop)
+  {
+    aborted = true;
+    return {};
+  }
   std::vector<GridPeak> gridPeaks;
   for (const auto& f : found)
   {
@@ -869,21 +899,40 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
   const int carried = polish ? wanted + 2 : wanted;
   // The two determinant classes run one after the other so only one tensor is alive.
   std::vector<Peak> peaks;
+  // Progress: each determinant class's grid search gets an equal share of the first 90%.
+  const int classes = options.Reflections == SO3ReflectionMode::Both ? 2 : 1;
+  int searched = 0;
+  auto search = [&](bool reflect) {
+    auto classProgress = [&](double fraction) {
+      return !options.Progress || options.Progress(0.9 * (searched + fraction) / classes);
+    };
+    auto found = SearchGrid(
+      source, target, bandwidth, reflect, options, threads, carried, classProgress, result.Aborted);
+    peaks.insert(peaks.end(), found.begin(), found.end());
+    ++searched;
+  };
   if (options.Reflections != SO3ReflectionMode::ReflectionsOnly)
   {
-    auto found = SearchGrid(source, target, bandwidth, false, options, threads, carried);
-    peaks.insert(peaks.end(), found.begin(), found.end());
+    search(false);
   }
-  if (options.Reflections != SO3ReflectionMode::RotationsOnly)
+  if (!result.Aborted && options.Reflections != SO3ReflectionMode::RotationsOnly)
   {
-    auto found = SearchGrid(source, target, bandwidth, true, options, threads, carried);
-    peaks.insert(peaks.end(), found.begin(), found.end());
+    search(true);
+  }
+  if (result.Aborted)
+  {
+    return result;
   }
   if (polish)
   {
     result.RefinementBandwidth = refinementBandwidth;
     PolishPeaks(source, target, refinementBandwidth, M_PI / bandwidth,
       options.MinimumCandidateSeparation, threads, peaks);
+  }
+  if (options.Progress && !options.Progress(1.0))
+  {
+    result.Aborted = true;
+    return result;
   }
   std::stable_sort(peaks.begin(), peaks.end(),
     [](const Peak& x, const Peak& y) { return x.Score > y.Score; });

@@ -21,6 +21,7 @@
 #ifndef mobius_SO3Correlation_h
 #define mobius_SO3Correlation_h
 
+#include "MeshTypes.h" // ProgressCallback
 #include "SphericalHarmonics.h"
 
 #include <Eigen/Core>
@@ -63,6 +64,10 @@ struct SO3CorrelationOptions
   double RefinementTolerance = 1e-15;
   /// 0: one thread per core.
   int NumberOfThreads = 0;
+  /// Called on the calling thread between the stages and between blocks of grid slices with
+  /// the fraction done; returning false stops the search (the result is then Aborted, with
+  /// no candidates). The grid search is most of a registration's time at high resolution.
+  ProgressCallback Progress;
 };
 
 struct SO3Candidate
@@ -97,6 +102,7 @@ struct SO3CorrelationResult
   int CorrelationBandwidth = 0; // B' of the search grid
   int GridResolution = 0;       // 2B' samples per 2π in α and γ; B'+1 in β over [0, π]
   int RefinementBandwidth = 0;  // B'' >= B' of the refinement (B' if RefinePeaks is off)
+  bool Aborted = false;         // Progress asked to stop: no candidates
   double SourceEnergy = 0.0;    // |f|² = Σ |f_lm|²
   double TargetEnergy = 0.0;
 };
