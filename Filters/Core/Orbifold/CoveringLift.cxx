@@ -46,8 +46,10 @@ bool LiftSphericalMapToCovering(const Points& sphereMap, const Triangles& triang
       continue;
     }
     const Eigen::Vector3d x = sphereMap.row(v).normalized();
-    const double denominator = 1.0 - x.dot(north);
-    if (!(denominator > 1e-14))
+    // 1 - x.n, computed as |x - n|^2 / 2: exact for the points a squeezed limb puts 1e-8
+    // from the cone's image, where 1 - x.n cancels to nothing.
+    const double denominator = 0.5 * (x - north).squaredNorm();
+    if (!(denominator > 0.0))
     {
       error = "a vertex lies on the image of cone 1 in the spherical map; cannot lift it";
       return false;
