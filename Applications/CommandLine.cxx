@@ -34,6 +34,7 @@ std::string UsageText()
   std::ostringstream text;
   text << "usage: mobius-register [options] SOURCE TARGET -o OUT\n"
           "       mobius-register [options] --symmetry MESH -o OUT\n"
+          "       mobius-register [options] --orbifold N MESH -o OUT [--cones I,J] [--covering]\n"
           "       mobius-register [options]            (demo on CGAL's cow and a deformed copy)\n"
           "\n"
           "Dense correspondence between two closed genus-0 surface meshes by Moebius\n"
@@ -61,6 +62,18 @@ std::string UsageText()
           "  --no-centering         skip the Moebius centering (and the centering between flow\n"
           "                         steps): the paper's uncentered comparison; the flow then\n"
           "                         drifts and may need --allow-poor-maps\n"
+          "\n"
+          "Orbifold map (paper Section 7.2):\n"
+          "  --orbifold N MESH      n-fold spherical orbifold map (N = 2..8): cut MESH between\n"
+          "                         two cone vertices, glue N copies into the cyclic covering,\n"
+          "                         map and center it. OUT.vtp: one copy on its 1/N of the\n"
+          "                         sphere (cones on the z axis), with SurfacePoints,\n"
+          "                         InputPointId, field data SymmetryError, StdLogAreaRatio\n"
+          "                         and PlainStdLogAreaRatio (area distortion of this map and\n"
+          "                         of the plain one). Uses the conformal map options below.\n"
+          "  --cones I,J            the cone vertices (vertex numbers in MESH; default two\n"
+          "                         far-apart vertices)\n"
+          "  --covering             OUT.vtp holds the whole covering (all N copies)\n"
           "\n"
           "Conformal map:\n"
           "  --iterations N         maximum flow steps (default "
@@ -158,6 +171,48 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
       }
       commandLine.Symmetry = true;
       commandLine.Source = mesh;
+    }
+    else if (option == "--orbifold")
+    {
+      std::string copies, mesh;
+      if (!value(copies) || !value(mesh))
+      {
+        error = "--orbifold takes N (2..8) and a mesh";
+        return false;
+      }
+      if (!ParseInteger(copies, commandLine.OrbifoldCopies) || commandLine.OrbifoldCopies < 2 ||
+        commandLine.OrbifoldCopies > 8)
+      {
+        error = "--orbifold N: N must be an integer from 2 to 8, not '" + copies + "'";
+        return false;
+      }
+      commandLine.Source = mesh;
+    }
+    else if (option == "--cones")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      const auto comma = text.find(',');
+      int cone0 = -1, cone1 = -1;
+      if (comma == std::string::npos || !ParseInteger(text.substr(0, comma), cone0) ||
+        !ParseInteger(text.substr(comma + 1), cone1) || cone0 < 0 || cone1 < 0)
+      {
+        error = "--cones takes two vertex numbers I,J (non-negative integers), not '" + text + "'";
+        return false;
+      }
+      if (cone0 == cone1)
+      {
+        error = "--cones: the two cone vertices must differ";
+        return false;
+      }
+      commandLine.Cones[0] = cone0;
+      commandLine.Cones[1] = cone1;
+    }
+    else if (option == "--covering")
+    {
+      commandLine.Covering = true;
     }
     else if (option == "--no-centering")
     {
@@ -296,6 +351,30 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
   if (commandLine.Help || commandLine.Version)
   {
     return true;
+  }
+  if (commandLine.OrbifoldCopies > 0)
+  {
+    if (commandLine.Symmetry || !positional.empty())
+    {
+      error = "--orbifold takes one mesh; no --symmetry or SOURCE TARGET besides it (see --help)";
+      return false;
+    }
+    if (!commandLine.Picture.empty() || !commandLine.Pipeline.Centering)
+    {
+      error = "--png and --no-centering are not available with --orbifold";
+      return false;
+    }
+    if (commandLine.Output.empty())
+    {
+      error = "no output given: add -o OUT";
+      return false;
+    }
+    return true;
+  }
+  if (commandLine.Cones[0] >= 0 || commandLine.Covering)
+  {
+    error = "--cones and --covering are for --orbifold only";
+    return false;
   }
   if (commandLine.Symmetry)
   {

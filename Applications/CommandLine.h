@@ -13,6 +13,9 @@ struct CommandLine
   std::string Picture;  // --png
   bool Demo = false;    // no input meshes given
   bool Symmetry = false; // --symmetry MESH: bilateral symmetry of Source
+  int OrbifoldCopies = 0; // --orbifold N MESH: n-fold orbifold map of Source (0: not asked)
+  long long Cones[2] = { -1, -1 }; // --cones I,J (file vertex numbers; -1: automatic)
+  bool Covering = false;  // --covering: write the whole covering
   bool Force = false;
   bool Quiet = false;
   bool Json = false;

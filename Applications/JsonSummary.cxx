@@ -200,3 +200,24 @@ std::string SymmetryJsonSummary(
        << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath) << "}\n}\n";
   return json.str();
 }
+
+std::string OrbifoldJsonSummary(
+  const std::string& mesh, const PipelineResult& result, const OutputFiles& outputs)
+{
+  vtkPolyData* map = result.Correspondence;
+  std::ostringstream json;
+  json << "{\n  \"mesh\": " << Quoted(mesh)
+       << ",\n  \"copies\": " << Number(FieldValue(map, "NumberOfCopies"))
+       << ",\n  \"cones\": " << Array(map, "ConeIds", 2)
+       << ",\n  \"symmetry_error\": " << Number(FieldValue(map, "SymmetryError"))
+       << ",\n  \"cone_antipodality\": " << Number(FieldValue(map, "ConeAntipodality"))
+       << ",\n  \"flipped_triangles\": " << Number(FieldValue(map, "FlippedTriangles"))
+       << ",\n  \"std_log_area_ratio\": " << Number(FieldValue(map, "StdLogAreaRatio"))
+       << ",\n  \"plain_std_log_area_ratio\": " << Number(FieldValue(map, "PlainStdLogAreaRatio"))
+       << ",\n  \"covering_flow_iterations\": " << Number(FieldValue(map, "ConformalFlowIterations"))
+       << ",\n  \"covering_flow_converged\": "
+       << (FieldValue(map, "ConformalFlowConverged") == 1 ? "true" : "false")
+       << ",\n  " << StageTimes(result.Stages) << ",\n  \"outputs\": {\"mesh\": "
+       << Quoted(outputs.MeshPath) << "}\n}\n";
+  return json.str();
+}

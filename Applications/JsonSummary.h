@@ -19,4 +19,9 @@ std::string JsonSummary(const std::string& source, const std::string& target,
 std::string SymmetryJsonSummary(
   const std::string& mesh, const PipelineResult& result, const OutputFiles& outputs);
 
+/// The --orbifold summary: cones, symmetry error, area distortion of the orbifold and the
+/// plain map, the covering flow, stages and outputs.
+std::string OrbifoldJsonSummary(
+  const std::string& mesh, const PipelineResult& result, const OutputFiles& outputs);
+
 #endif

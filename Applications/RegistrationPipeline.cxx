@@ -5,6 +5,7 @@
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
 #include "vtkSphericalConformalMap.h"
+#include "vtkSphericalOrbifoldMap.h"
 #include "vtkSymmetryDetection.h"
 
 #include "vtkCallbackCommand.h"
@@ -271,4 +272,20 @@ bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
                           }),
     result.Warnings.end());
   return true;
+}
+
+bool RunOrbifoldMap(vtkPolyData* mesh, const std::string& name, const PipelineOptions& options,
+  int copies, const long long cones[2], bool covering, PipelineResult& result, std::string& error,
+  const StageProgress& progress)
+{
+  if (!MapToSphere(mesh, name, "conformal map", options, progress, result, result.SourceMap, error))
+  {
+    return false;
+  }
+  vtkNew<vtkSphericalOrbifoldMap> orbifold;
+  orbifold->SetInputData(result.SourceMap); // cones: its InputPointId, the file's numbering
+  orbifold->SetNumberOfCopies(copies);
+  orbifold->SetConeIds(static_cast<vtkIdType>(cones[0]), static_cast<vtkIdType>(cones[1]));
+  orbifold->SetOutputCovering(covering);
+  return RunStage(orbifold, "orbifold map", name, progress, result, result.Correspondence, error);
 }

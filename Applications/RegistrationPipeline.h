@@ -68,6 +68,13 @@ bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
   const PipelineOptions& options, PipelineResult& result, std::string& error,
   const StageProgress& progress = {});
 
+/// Spherical orbifold map of one mesh (vtkSphericalOrbifoldMap on its conformal map, cones
+/// named by file vertex numbers, -1 -1 for automatic ones): the map in result.SourceMap, the
+/// orbifold map (one copy, or the covering) in result.Correspondence.
+bool RunOrbifoldMap(vtkPolyData* mesh, const std::string& name, const PipelineOptions& options,
+  int copies, const long long cones[2], bool covering, PipelineResult& result, std::string& error,
+  const StageProgress& progress = {});
+
 /// Value of component `component` of field-data array `name`, NaN if absent.
 double FieldValue(vtkPolyData* data, const char* name, int component = 0);
 

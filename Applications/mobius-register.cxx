@@ -174,6 +174,55 @@ int RunSymmetry(const CommandLine& commandLine)
   return 0;
 }
 
+// --orbifold N MESH: the n-fold spherical orbifold map of the mesh.
+int RunOrbifold(const CommandLine& commandLine)
+{
+  std::string error;
+  OutputFiles outputs;
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!outputs.Plan(commandLine.Output, "", commandLine.Force, { commandLine.Source }, error) ||
+    !ReadMesh(commandLine.Source, mesh, error))
+  {
+    return Fail(error);
+  }
+  std::vector<std::string> warnings;
+  CollectVTKMessages(warnings);
+  const bool verbose = !commandLine.Quiet;
+  PipelineResult result;
+  if (!RunOrbifoldMap(mesh, commandLine.Source, commandLine.Pipeline, commandLine.OrbifoldCopies,
+        commandLine.Cones, commandLine.Covering, result, error,
+        TerminalProgress(verbose && isatty(STDERR_FILENO))))
+  {
+    return Fail(error);
+  }
+  if (!outputs.WriteMesh(result.Correspondence, error) || !outputs.Commit(error))
+  {
+    return Fail(error);
+  }
+  CollectVTKMessages(warnings);
+  warnings.insert(warnings.end(), result.Warnings.begin(), result.Warnings.end());
+  if (verbose)
+  {
+    PrintWarningsAndTimes(warnings, result);
+  }
+  vtkPolyData* map = result.Correspondence;
+  if (commandLine.Json)
+  {
+    std::cout << OrbifoldJsonSummary(commandLine.Source, result, outputs);
+  }
+  else if (verbose)
+  {
+    std::cout << commandLine.OrbifoldCopies << "-fold orbifold map of " << commandLine.Source
+              << ": cones " << FieldValue(map, "ConeIds", 0) << " and "
+              << FieldValue(map, "ConeIds", 1) << ", symmetry error "
+              << FieldValue(map, "SymmetryError") << ", std of log area ratio "
+              << FieldValue(map, "StdLogAreaRatio") << " (plain spherical map: "
+              << FieldValue(map, "PlainStdLogAreaRatio") << ").\n"
+              << "Wrote " << outputs.MeshPath << ".\n";
+  }
+  return 0;
+}
+
 int Run(int argc, char* argv[]);
 }
 
@@ -220,6 +269,10 @@ int Run(int argc, char* argv[])
   if (commandLine.Symmetry)
   {
     return RunSymmetry(commandLine);
+  }
+  if (commandLine.OrbifoldCopies > 0)
+  {
+    return RunOrbifold(commandLine);
   }
 
   vtkSmartPointer<vtkPolyData> source, target;
