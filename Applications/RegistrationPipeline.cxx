@@ -197,7 +197,14 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
     return RunStage(center, std::string("centering (") + which[k] + ")", names[k],
       sharedProgress, parts[k], *centered[k], errors[k]);
   };
-  auto targetJob = std::async(std::launch::async, mapAndCenter, 1);
+  // One mesh given as both inputs is mapped twice in turn: VTK builds a mesh's cell
+  // structures lazily on first read, so two filters may not read it at once.
+  const bool sideBySide = source != target;
+  std::future<bool> targetJob;
+  if (sideBySide)
+  {
+    targetJob = std::async(std::launch::async, mapAndCenter, 1);
+  }
   bool ok[2];
   try
   {
@@ -205,10 +212,13 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   }
   catch (...)
   {
-    targetJob.wait(); // the target's job uses this frame's variables
+    if (sideBySide)
+    {
+      targetJob.wait(); // the target's job uses this frame's variables
+    }
     throw;
   }
-  ok[1] = targetJob.get();
+  ok[1] = sideBySide ? targetJob.get() : ok[0] && mapAndCenter(1);
   for (int k = 0; k < 2; ++k)
   {
     result.Stages.insert(result.Stages.end(), parts[k].Stages.begin(), parts[k].Stages.end());
