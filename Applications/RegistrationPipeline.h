@@ -50,6 +50,9 @@ struct PipelineResult
   vtkSmartPointer<vtkPolyData> MobiusCorrespondence; // vtkDenseCorrespondence output
   vtkSmartPointer<vtkPolyData> Correspondence; // the final map: refined, or the Möbius one
   std::vector<StageTiming> Stages;
+  /// The whole job's wall time, 0 if not measured: less than the sum of Stages, since
+  /// some stages run side by side.
+  double WallSeconds = 0;
   std::vector<std::string> Warnings;
 };
 

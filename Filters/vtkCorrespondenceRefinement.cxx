@@ -1,5 +1,6 @@
 #include "vtkCorrespondenceRefinement.h"
 
+#include "ParallelFor.h"
 #include "SphericalPointLocator.h"
 #include "ZoomOut.h"
 #include "vtkCorrespondenceOutput.h"
@@ -255,31 +256,39 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     {
       determinants.push_back(start.determinant() * bestDeterminant);
     }
+    // The candidates are independent and each one's sample ZoomOut is too small (1000
+    // samples) to keep several threads busy: one candidate per thread.
+    std::vector<mobius::SampleMap> screened(starts.size());
+    mobius::ZoomOutParameters oneThread = parameters;
+    oneThread.NumberOfThreads = 1;
+    mobius::ParallelFor(static_cast<int>(starts.size()),
+      mobius::ResolveThreadCount(parameters.NumberOfThreads), [&](int c, int) {
+        screened[c] = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
+          StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
+          oneThread);
+      });
+    this->UpdateProgress(0.7);
+    if (this->GetAbortExecute())
+    {
+      return 0;
+    }
     mobius::SampleMap best;
     int bestCandidate = 0;
     bool bestRightSide = false;
     for (size_t c = 0; c < starts.size(); ++c)
     {
-      mobius::SampleMap screened = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
-        StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
-        parameters);
-      residuals.push_back(screened.OrthogonalityResidual);
-      orientation.push_back(screened.OrientationAgreement);
-      coverage.push_back(screened.TargetCoverage);
+      residuals.push_back(screened[c].OrthogonalityResidual);
+      orientation.push_back(screened[c].OrientationAgreement);
+      coverage.push_back(screened[c].TargetCoverage);
       // A map of the expected orientation beats one of the other; then the more orthogonal.
-      const bool rightSide = mobius::HasOrientation(screened, determinants[c] > 0);
+      const bool rightSide = mobius::HasOrientation(screened[c], determinants[c] > 0);
       if (c == 0 || (rightSide && !bestRightSide) ||
         (rightSide == bestRightSide &&
-          screened.OrthogonalityResidual < best.OrthogonalityResidual))
+          screened[c].OrthogonalityResidual < best.OrthogonalityResidual))
       {
         bestRightSide = rightSide;
-        best = std::move(screened);
+        best = screened[c];
         bestCandidate = static_cast<int>(c);
-      }
-      this->UpdateProgress(0.5 + 0.2 * (c + 1) / starts.size());
-      if (this->GetAbortExecute())
-      {
-        return 0;
       }
     }
     // A bilaterally symmetric shape can come out mapped onto the target's mirror image; the

@@ -39,8 +39,15 @@ if summary:
     check(summary["demo_mean_error_over_sqrt_area"] < 0.04,
           f"demo error {summary['demo_mean_error_over_sqrt_area']}")
     check(summary["source_map"]["flipped_triangles"] == 0, "demo source map has no flips")
-    check([s["name"] for s in summary["stages"]][-2:] == ["dense correspondence", "refinement"],
-          "demo stages")
+    check([s["name"] for s in summary["stages"]] ==
+          ["conformal map (source)", "centering (source)", "conformal map (target)",
+           "centering (target)", "rotational alignment", "dense correspondence", "refinement"],
+          "demo stages, in order")
+    # The two meshes' maps run side by side: the total is the job's wall time, at most the
+    # stages' sum and at least the stages that ran alone.
+    seconds = [s["seconds"] for s in summary["stages"]]
+    check(sum(seconds[4:]) <= summary["total_seconds"] <= sum(seconds) + 0.05,
+          f"demo total_seconds {summary['total_seconds']} against the stages {seconds}")
     refinement = summary["refinement"]
     check(refinement is not None and len(refinement["candidates"]) >= 1 and
           0 <= refinement["kept_candidate"] < len(refinement["candidates"]) and

@@ -35,6 +35,19 @@ struct ShiftedFactorization
 
   bool Ok() const { return this->Factorization.info() == Eigen::Success; }
 
+  // Factorizes L - sigma M for another shift, reusing the fill-reducing ordering and the
+  // symbolic analysis (the same sparsity pattern).
+  void Shift(const SparseMatrix& stiffness, const Vector& mass, double sigma)
+  {
+    SparseMatrix shifted = stiffness;
+    for (Eigen::Index i = 0; i < shifted.rows(); ++i)
+    {
+      shifted.coeffRef(i, i) -= sigma * mass[i];
+    }
+    this->Sigma = sigma;
+    this->Factorization.factorize(shifted);
+  }
+
   double Sigma;
   Vector SqrtMass;
   Eigen::SimplicialLDLT<SparseMatrix> Factorization;
@@ -95,10 +108,12 @@ bool ShiftInvertLanczos(const ShiftedFactorization& factorization, int count, do
 }
 
 // How many eigenvalues of L phi = lambda M phi lie below `value` (Sylvester's law of inertia:
-// the negative pivots of the LDL^T factorization of L - value M); -1 if it fails.
-Eigen::Index EigenvaluesBelow(const SparseMatrix& stiffness, const Vector& mass, double value)
+// the negative pivots of the LDL^T factorization of L - value M); -1 if it fails. Refactorizes
+// `factorization` (whose ordering it reuses) at that shift.
+Eigen::Index EigenvaluesBelow(
+  const SparseMatrix& stiffness, const Vector& mass, double value, ShiftedFactorization& factorization)
 {
-  const ShiftedFactorization factorization(stiffness, mass, value);
+  factorization.Shift(stiffness, mass, value);
   if (!factorization.Ok())
   {
     return -1;
@@ -173,7 +188,7 @@ bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangle
   // agrees with the double-precision one to 1 - 1e-6 with sigma = -10, to 1 - 4e-5 with
   // sigma = -1e-3); the convergence of the wanted end, set by the gaps between
   // 1 / (lambda_j - sigma), hardly changes.
-  const ShiftedFactorization factorization(stiffness, basis.Mass, -10.0);
+  ShiftedFactorization factorization(stiffness, basis.Mass, -10.0);
   if (!factorization.Ok())
   {
     error = "the Laplacian could not be factorized";
@@ -193,7 +208,8 @@ bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangle
   const Vector inverseSqrtMass = basis.Mass.cwiseSqrt().cwiseInverse();
   auto complete = [&](const Vector& values) {
     const double below = values[count - 1] - 1e-4 * std::abs(values[count - 1]);
-    return EigenvaluesBelow(stiffness, basis.Mass, below) == (values.array() < below).count();
+    return EigenvaluesBelow(stiffness, basis.Mass, below, factorization) ==
+      (values.array() < below).count();
   };
   Eigen::MatrixXd vectors;
   bool solved = ShiftInvertLanczos<float>(factorization, count, 1e-5, vectors) &&
