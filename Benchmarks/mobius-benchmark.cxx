@@ -3,6 +3,7 @@
 // stage and the process's peak resident memory.
 //
 //   mobius-benchmark [--repeat N] [--resolutions 128,256,512] [--stages map,grid,register,correspond] MESH...
+//   mobius-benchmark --ladder MAX_VERTICES [--ladder-csv FILE] MESH...
 //
 // map: vtkSphericalConformalMap + vtkMobiusCenter. grid: vtkSphericalScaleGrid at each
 // resolution (exact rasterization, forward and inverse transform). register: vtkSO3Register
@@ -12,6 +13,9 @@
 // a bent, rotated copy of itself (near-isometric, vertex i <-> vertex i): the Möbius map
 // (vtkDenseCorrespondence) and the refined one (vtkCorrespondenceRefinement), their
 // geodesic errors (edge paths, over sqrt(area)) and the refinement's seconds per stage.
+// --ladder: the conformal map's scaling instead: each mesh and its Loop subdivisions (x4
+// vertices per level) up to MAX_VERTICES, each mapped once in a child process so that its
+// peak memory is its own (Benchmarks/plot_ladder.py draws the CSV).
 #include "CorrespondenceScore.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
@@ -21,7 +25,9 @@
 #include "vtkSphericalScaleGrid.h"
 #include "vtkSurfaceMeshReader.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkLoopSubdivisionFilter.h"
 #include "vtkPointData.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
@@ -32,12 +38,15 @@
 #include <Eigen/Eigenvalues>
 
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <sstream>
@@ -218,16 +227,158 @@ std::vector<int> ParseList(const std::string& text)
   return values;
 }
 
+// One rung of the size ladder: what the child process that mapped it reports.
+struct LadderRung
+{
+  std::string Mesh;
+  int Level = 0;
+  long long Vertices = 0;
+  double MapSeconds = 0;
+  double FlowSteps = 0;
+  double MeanQuasiConformal = 0;
+  double Flips = 0;
+  double PeakMB = 0;
+  bool Ok = false;
+};
+
+// Maps `mesh` once in a forked child (so that the peak resident memory, read from the
+// child's rusage, is that of this one map: mesh, map and solver) and returns its figures.
+LadderRung MapInChild(vtkPolyData* mesh)
+{
+  LadderRung rung;
+  rung.Vertices = mesh->GetNumberOfPoints();
+  int channel[2];
+  if (pipe(channel) != 0)
+  {
+    return rung;
+  }
+  std::fflush(nullptr);
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    close(channel[0]);
+    vtkSmartPointer<vtkPolyData> map;
+    const auto start = std::chrono::steady_clock::now();
+    vtkNew<vtkSphericalConformalMap> filter;
+    filter->SetInputData(mesh);
+    filter->Update();
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    map = filter->GetOutput();
+    double figures[5] = { map->GetNumberOfPoints() > 0 ? 1.0 : 0.0, seconds,
+      Field(map, "ConformalFlowIterations"), Field(map, "MeanQuasiConformalDistortion"),
+      Field(map, "FlippedTriangles") };
+    const ssize_t written = write(channel[1], figures, sizeof(figures));
+    _exit(written == static_cast<ssize_t>(sizeof(figures)) ? 0 : 1);
+  }
+  close(channel[1]);
+  if (child < 0)
+  {
+    close(channel[0]);
+    return rung;
+  }
+  double figures[5] = { 0, 0, 0, 0, 0 };
+  const ssize_t got = read(channel[0], figures, sizeof(figures));
+  close(channel[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(child, &status, 0, &usage);
+  rung.Ok = got == static_cast<ssize_t>(sizeof(figures)) && WIFEXITED(status) &&
+    WEXITSTATUS(status) == 0 && figures[0] == 1.0;
+  rung.MapSeconds = figures[1];
+  rung.FlowSteps = figures[2];
+  rung.MeanQuasiConformal = figures[3];
+  rung.Flips = figures[4];
+  rung.PeakMB = usage.ru_maxrss / 1024.0;
+  return rung;
+}
+
+// The size ladder: every mesh and its Loop subdivisions up to maxVertices.
+int RunLadder(const std::vector<std::string>& meshes, long long maxVertices, const std::string& csv)
+{
+  std::vector<LadderRung> rungs;
+  int status = 0;
+  for (const auto& file : meshes)
+  {
+    vtkNew<vtkSurfaceMeshReader> reader;
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    vtkSmartPointer<vtkPolyData> mesh = reader->GetOutput();
+    if (mesh->GetNumberOfPoints() == 0)
+    {
+      std::fprintf(stderr, "%s: cannot read the mesh\n", file.c_str());
+      status = 1;
+      continue;
+    }
+    for (int level = 0; mesh->GetNumberOfPoints() <= maxVertices; ++level)
+    {
+      LadderRung rung = MapInChild(mesh);
+      rung.Mesh = BaseName(file);
+      rung.Level = level;
+      std::fprintf(stderr, "%s level %d: %lld vertices, %.2f s, %.0f MB%s\n", rung.Mesh.c_str(),
+        level, rung.Vertices, rung.MapSeconds, rung.PeakMB, rung.Ok ? "" : " (FAILED)");
+      status = rung.Ok ? status : 1;
+      rungs.push_back(rung);
+      // Loop subdivision: each triangle into four, smoothing the positions (a closed genus-0
+      // mesh stays one; vertices go from V to about 4V).
+      vtkNew<vtkLoopSubdivisionFilter> subdivide;
+      subdivide->SetInputData(mesh);
+      subdivide->SetNumberOfSubdivisions(1);
+      subdivide->Update();
+      mesh = subdivide->GetOutput();
+      if (mesh->GetNumberOfPoints() == 0)
+      {
+        break;
+      }
+    }
+  }
+  std::sort(rungs.begin(), rungs.end(),
+    [](const LadderRung& a, const LadderRung& b) { return a.Vertices < b.Vertices; });
+  std::cout << "Conformal map over a size ladder (Loop subdivisions; one run each, own process)\n\n"
+            << "| mesh | Loop level | V | map s | flow steps | mean QC | flips | peak MB |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  std::ofstream table;
+  if (!csv.empty())
+  {
+    table.open(csv);
+    table << "mesh,level,vertices,map_seconds,flow_steps,mean_qc,flips,peak_mb\n";
+  }
+  for (const auto& r : rungs)
+  {
+    char row[512];
+    std::snprintf(row, sizeof(row), "| %s | %d | %lld | %.3f | %.0f | %.4f | %.0f | %.0f |\n",
+      r.Mesh.c_str(), r.Level, r.Vertices, r.MapSeconds, r.FlowSteps, r.MeanQuasiConformal,
+      r.Flips, r.PeakMB);
+    std::cout << row;
+    if (table.is_open() && r.Ok)
+    {
+      table << r.Mesh << "," << r.Level << "," << r.Vertices << "," << r.MapSeconds << ","
+            << r.FlowSteps << "," << r.MeanQuasiConformal << "," << r.Flips << "," << r.PeakMB
+            << "\n";
+    }
+  }
+  if (!csv.empty() && !table)
+  {
+    std::fprintf(stderr, "cannot write %s\n", csv.c_str());
+    status = 1;
+  }
+  return status;
+}
+
 // --help prints to standard output and succeeds (the man page is made from it); a usage
 // error prints the same text to standard error and exits 2.
 int Usage(std::ostream& out, int status)
 {
   out << "usage: mobius-benchmark [--repeat N] [--resolutions 128,256,512]\n"
          "                        [--stages map,grid,register,correspond,refine] MESH [MESH ...]\n"
+         "       mobius-benchmark --ladder MAX_VERTICES [--ladder-csv FILE] MESH [MESH ...]\n"
          "       mobius-benchmark --version | -h/--help\n"
          "\n"
          "Per stage: seconds (median of N runs, default 3), quality figures and peak memory,\n"
-         "as Markdown tables. Meshes: .obj .off .ply .stl .vtp .vtk. Build Release to measure.\n";
+         "as Markdown tables. Meshes: .obj .off .ply .stl .vtp .vtk. Build Release to measure.\n"
+         "--ladder: the conformal map alone on each mesh and its Loop subdivisions up to\n"
+         "MAX_VERTICES vertices, one run each in its own process: seconds, flow steps, quality\n"
+         "and peak memory (--ladder-csv also writes them as CSV for plot_ladder.py).\n";
   return status;
 }
 }
@@ -238,6 +389,8 @@ int main(int argc, char* argv[])
   std::vector<int> resolutions = { 128, 256, 512 };
   std::string stages = "map,grid,register,correspond,refine";
   std::vector<std::string> meshes;
+  long long ladder = 0;
+  std::string ladderCsv;
   for (int i = 1; i < argc; ++i)
   {
     const std::string argument = argv[i];
@@ -252,6 +405,18 @@ int main(int argc, char* argv[])
     else if (argument == "--stages" && i + 1 < argc)
     {
       stages = argv[++i];
+    }
+    else if (argument == "--ladder" && i + 1 < argc)
+    {
+      ladder = std::atoll(argv[++i]);
+      if (ladder <= 0)
+      {
+        return Usage(std::cerr, 2);
+      }
+    }
+    else if (argument == "--ladder-csv" && i + 1 < argc)
+    {
+      ladderCsv = argv[++i];
     }
     else if (argument == "--help" || argument == "-h")
     {
@@ -274,6 +439,10 @@ int main(int argc, char* argv[])
   if (meshes.empty())
   {
     return Usage(std::cerr, 2);
+  }
+  if (ladder > 0)
+  {
+    return RunLadder(meshes, ladder, ladderCsv);
   }
   auto wants = [&stages](const char* stage) { return stages.find(stage) != std::string::npos; };
 

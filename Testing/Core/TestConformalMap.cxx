@@ -8,9 +8,11 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 using namespace mobius;
 
@@ -209,23 +211,30 @@ void TestHooksAndAbort()
     ++calls;
     return iteration == calls; // called once per step, in order
   };
-  double lastProgress = 0.0;
-  parameters.Progress = [&lastProgress](double progress) {
-    lastProgress = progress;
+  std::vector<double> reported;
+  parameters.Progress = [&reported](double progress) {
+    reported.push_back(progress);
     return true;
   };
   ConformalMapResult r = ComputeSphericalConformalMap(p, t, parameters);
   MOBIUS_CHECK(r.Success);
   MOBIUS_CHECK(calls == r.Iterations);
-  MOBIUS_CHECK(lastProgress > 0.0 && lastProgress <= 1.0);
+  // Once before the flow and once per step, increasing, and well past the start by the
+  // end (a long map's progress bar must move, not stay at steps / iteration limit).
+  MOBIUS_CHECK(static_cast<int>(reported.size()) == r.Iterations + 1);
+  MOBIUS_CHECK(std::is_sorted(reported.begin(), reported.end()));
+  MOBIUS_CHECK(reported.front() > 0.0 && reported.back() < 1.0);
+  MOBIUS_CHECK(r.Iterations < 5 || reported.back() > 0.5);
 
-  // Abort from the progress callback after the second step.
-  parameters.BetweenSteps = FlowStepHook();
-  parameters.Progress = [](double progress) { return progress < 0.015; };
+  // Abort from the progress callback after the second step (0.05, then 0.185, 0.30).
+  calls = 0;
+  parameters.BetweenSteps = [&calls](Points&, int) { return ++calls > 0; };
+  parameters.Progress = [](double progress) { return progress < 0.25; };
   r = ComputeSphericalConformalMap(p, t, parameters);
   MOBIUS_CHECK(!r.Success);
   MOBIUS_CHECK(Contains(r.Message, "aborted"));
   MOBIUS_CHECK(r.SpherePoints.rows() == 0);
+  MOBIUS_CHECK(calls == 2);
 
   // A fixed number of steps: tolerance 0 never converges.
   parameters = ConformalMapParameters();
