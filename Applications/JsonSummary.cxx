@@ -219,7 +219,7 @@ std::string OrbifoldJsonSummary(
        << ",\n  \"covering_flow_iterations\": " << Number(FieldValue(map, "ConformalFlowIterations"))
        << ",\n  \"covering_flow_converged\": "
        << (FieldValue(map, "ConformalFlowConverged") == 1 ? "true" : "false")
-       << ",\n  " << StageTimes(result.Stages) << ",\n  \"outputs\": {\"mesh\": "
+       << ",\n  " << StageTimes(result) << ",\n  \"outputs\": {\"mesh\": "
        << Quoted(outputs.MeshPath) << "}\n}\n";
   return json.str();
 }
