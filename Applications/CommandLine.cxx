@@ -89,6 +89,14 @@ std::string UsageText()
           "                         (triangles flipped after repair, area collapsed or\n"
           "                         squashed, flow not converged, squeezed-region\n"
           "                         refinement failed)\n"
+          "Centering:\n"
+          "  --degree L             centering degree for both meshes, 1 to 8 (default "
+       << defaults.CenteringDegree
+       << "):\n"
+          "                         1 is the paper's Moebius centering (conformal); 2..8 go on\n"
+          "                         to its generalized centering (Section 5, Figure 5): no\n"
+          "                         area moments of spherical-harmonic degree 1..L, area spread\n"
+          "                         more evenly at the cost of conformality\n"
           "Registration:\n"
           "  --resolution N         scale-factor grid size, even, as memory allows (default "
        << defaults.Resolution
@@ -267,6 +275,19 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
       }
       commandLine.Pipeline.BasisSize = number;
     }
+    else if (option == "--degree")
+    {
+      // vtkMobiusCenter clamps its Degree to 1..8; a value outside is refused, not clamped.
+      int number = 0;
+      if (!value(text) || !ParseInteger(text, number) || number < 1 || number > 8)
+      {
+        error = error.empty() ? "--degree needs an integer from 1 (the paper's Moebius centering) "
+                                "to 8, not '" + text + "'"
+                              : error;
+        return false;
+      }
+      commandLine.Pipeline.CenteringDegree = number;
+    }
     else if (option == "--iterations" || option == "--resolution" || option == "--candidates")
     {
       int number = 0;
@@ -351,6 +372,14 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
   if (commandLine.Help || commandLine.Version)
   {
     return true;
+  }
+  // Symmetry detection and the orbifold map center with the Möbius centering only.
+  if (commandLine.Pipeline.CenteringDegree != 1 &&
+    (commandLine.OrbifoldCopies > 0 || commandLine.Symmetry))
+  {
+    error = "--degree is for registering two meshes; --symmetry and --orbifold use the Moebius "
+            "centering (degree 1)";
+    return false;
   }
   if (commandLine.OrbifoldCopies > 0)
   {

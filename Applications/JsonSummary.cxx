@@ -111,6 +111,9 @@ std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
       << ", \"mean_quasi_conformal_distortion\": " << Number(FieldValue(map, "MeanQuasiConformalDistortion"))
       << ", \"max_quasi_conformal_distortion\": " << Number(FieldValue(map, "MaxQuasiConformalDistortion"))
       << ", \"centering_iterations\": " << Number(FieldValue(centered, "CenteringIterations"))
+      << ", \"centering_degree\": " << Number(FieldValue(centered, "CenteringDegree"))
+      << ", \"generalized_centering_iterations\": "
+      << Number(FieldValue(centered, "GeneralizedCenteringIterations"))
       << ", \"center_of_mass_norm\": " << Number(FieldValue(centered, "CenterOfMassNorm"));
   // null for a good map; the reason for one written with --allow-poor-maps.
   auto reason =

@@ -195,6 +195,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
     vtkNew<vtkMobiusCenter> center;
     center->SetInputData(*maps[k]);
     center->SetTolerance(options.CenteringTolerance);
+    center->SetDegree(options.CenteringDegree);
     return RunStage(center, std::string("centering (") + which[k] + ")", names[k],
       sharedProgress, parts[k], *centered[k], errors[k]);
   };

@@ -24,6 +24,9 @@ struct PipelineOptions
   bool AllowPoorMaps = false;
   // vtkMobiusCenter
   double CenteringTolerance = 1e-10;
+  // Highest spherical-harmonic degree centered against, for both meshes of a registration:
+  // 1 the paper's Möbius centering; 2..8 its generalized centering (§5, Figure 5).
+  int CenteringDegree = 1;
   bool Centering = true; // symmetry detection only: false for the uncentered comparison
   // vtkSO3Register
   int Resolution = 256;
