@@ -11,10 +11,14 @@
  * The filter cuts the surface along the shortest edge path between the two cone vertices,
  * glues NumberOfCopies copies of the cut surface into the n-fold cyclic covering (the left
  * side of the cut on copy i to the right side on copy i + 1), maps the covering onto the
- * sphere with the conformal flow (started from the surface's own spherical map lifted to
- * the covering), centers it (Möbius centering with the covering's areas) and turns it so
- * that the cones lie on the z axis (cone 2 at the north pole). Centering makes the map
- * n-fold symmetric: rotating copy i by 2 pi / n about z gives copy i + 1.
+ * sphere with the conformal flow, centers it (Möbius centering with the covering's areas)
+ * and turns it so that the cones lie on the z axis (cone 2 at the north pole). The map is
+ * n-fold symmetric, rotating copy i by 2 pi / n about z gives copy i + 1, by construction:
+ * the flow starts from the surface's own spherical map lifted to the covering, whose copies
+ * are already placed symmetrically about the cones' axis, and the flow (which treats the
+ * copies alike) and the centering keep that symmetry (to rounding). Centering makes the
+ * result canonical: any conformal map of the covering, once centered, is this one up to a
+ * rotation, hence symmetric as well.
  *
  * Input: a closed genus-0 triangle mesh (mapped and repaired by vtkSphericalConformalMap's
  * defaults), or a spherical map made by vtkSphericalConformalMap (points on the unit sphere

@@ -43,7 +43,7 @@ total = (np.exp2(after) * areas / areas.sum()).sum()
 assert abs(total - 1) < 1e-9, total
 
 for name in ("SphericalConformalMap", "MobiusCenter", "SO3Register", "SphericalScaleGrid",
-             "DenseCorrespondence", "RefineCorrespondence", "DetectSymmetry"):
+             "DenseCorrespondence", "RefineCorrespondence", "DetectSymmetry", "SphericalOrbifoldMap"):
     prototype = servermanager.ProxyManager().GetPrototypeProxy("filters", name)
     assert prototype is not None, name
     assert prototype.GetNumberOfPropertyGroups() >= 1, name
@@ -53,6 +53,20 @@ for name in ("SphericalConformalMap", "MobiusCenter", "SO3Register", "SphericalS
     assert grouped, name
     documentation = prototype.GetDocumentation()
     assert documentation.GetShortHelp() and documentation.GetLongHelp(), name
+    # Every property says what it does (the panel's tooltip); the applications' filters
+    # (paper Section 5 and 7) put each of theirs in a group by stage.
+    properties = servermanager.vtkSMPropertyIterator()
+    properties.SetProxy(prototype)
+    properties.Begin()
+    while not properties.IsAtEnd():
+        prop = properties.GetProperty()
+        if prop.GetPanelVisibility() != "never" and not prop.GetInformationOnly():
+            text = prop.GetDocumentation().GetDescription() if prop.GetDocumentation() else None
+            assert text and text.strip(), (name, properties.GetKey())
+            if name in ("MobiusCenter", "DetectSymmetry", "SphericalOrbifoldMap") and \
+                    properties.GetKey() != "Input":
+                assert prop.GetXMLLabel() in grouped, (name, properties.GetKey(), "not in a property group")
+        properties.Next()
     resolution = prototype.GetProperty("Resolution")
     if resolution is not None:
         domain = resolution.FindDomain("vtkSMEnumerationDomain")

@@ -10,11 +10,16 @@
 // the shortest edge path between them, glue n copies into the cyclic covering
 // (CyclicCovering.h), map the covering onto the sphere with the conformal flow
 // (ConformalMap.h) started from the mesh's own map lifted to the covering (CoveringLift.h),
-// and center it (MobiusCentering.h, the covering's areas). The centered map of the covering
-// is unique up to rotation, and so is the same map composed with the covering's deck
-// transformation (which shifts every copy by one): centering makes the deck transformation
-// a rotation of order n, about the axis through the two cones, which end up antipodal. The
-// map is finally rotated so that this axis is z (cone 1 at the north pole).
+// and center it (MobiusCentering.h, the covering's areas). The symmetry comes from the
+// start: the lift places the copies n-fold symmetrically about the axis through the two
+// cones (the deck transformation, which shifts every copy by one, acts as a rotation by
+// 2 pi / n), and every later step keeps it up to rounding: the flow's linear solves and
+// rescaling treat the copies alike (the covering's copies have the same geometry), and a
+// symmetric map's center of mass lies on the axis, so centering moves it along the axis.
+// The centering makes the result canonical: the centered map of the covering is unique up
+// to rotation, so any other conformal map of the covering, centered, is this one turned
+// (and symmetric too). The map is finally rotated so that the cones' axis is z (cone 1 at
+// the north pole).
 #ifndef mobius_SphericalOrbifoldMap_h
 #define mobius_SphericalOrbifoldMap_h
 
