@@ -6,6 +6,8 @@
 //   antipodal, no triangle is flipped, and it distorts area less than the plain map;
 // - the same map after a Möbius transformation (another conformal map of the covering, not
 //   centered) is far from symmetric, and centering it again restores the symmetry;
+// - the symmetry is there from the flow's lifted start on, and every flow step keeps it
+//   (with or without centering between the steps);
 // - bad parameters (cones out of range or equal, n outside 2..8) fail with their reason.
 #include "CoreTest.h"
 #include "CutPath.h"
@@ -14,6 +16,7 @@
 #include "SphericalOrbifoldMap.h"
 #include "CotangentLaplacian.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -129,6 +132,35 @@ void TestOrbifoldMap(const mobius::Points& points, const mobius::Triangles& tria
   const double recenteredError = SymmetryAboutConeAxis(uncentered, covering);
   std::cout << "  re-centered symmetry error " << recenteredError << std::endl;
   MOBIUS_CHECK(recenteredError < 1e-6);
+
+  // Where the symmetry comes from (as the README says): the lifted start is already
+  // symmetric about z and every flow step keeps it, with the centering between the steps
+  // or without it; the final centering only keeps it too.
+  for (const bool centerBetweenSteps : { true, false })
+  {
+    mobius::SphericalOrbifoldMapParameters traced = parameters;
+    traced.Cones[0] = result.Cones[0];
+    traced.Cones[1] = result.Cones[1];
+    traced.Flow.MobiusCentering = centerBetweenSteps;
+    double worst = 0.0;
+    int steps = 0;
+    traced.Flow.BetweenSteps = [&](mobius::Points& positions, int) {
+      const mobius::Points onSphere = positions.rowwise().normalized();
+      worst = std::max(worst, mobius::MeasureCyclicSymmetry(onSphere, covering.NextCopyVertex,
+                                Eigen::Vector3d::UnitZ(), n).MaximumDistance);
+      ++steps;
+      return true;
+    };
+    // The plain map given, so that the hook sees only the covering's flow.
+    const mobius::SphericalOrbifoldMapResult again =
+      mobius::ComputeSphericalOrbifoldMap(points, triangles, result.PlainMap, traced);
+    std::cout << "  centering between steps " << centerBetweenSteps << ": " << steps
+              << " flow steps, symmetry about z at most " << worst << ", final "
+              << again.Symmetry.MaximumDistance << std::endl;
+    MOBIUS_CHECK(again.Success && steps >= 2);
+    MOBIUS_CHECK(worst < 1e-9);
+    MOBIUS_CHECK(again.Symmetry.MaximumDistance < 1e-9);
+  }
 }
 
 void TestErrors(const mobius::Points& points, const mobius::Triangles& triangles)
