@@ -117,6 +117,10 @@ std::string UsageText()
        << ")\n"
           "  --output-geometry G    target | source: where OUT.vtp's points are (default target)\n"
           "Other:\n"
+          "  --threads N            threads per threaded stage, 0 to 1024; 0: one per core\n"
+          "                         this process may use (CPU affinity), at most\n"
+          "                         VTK_SMP_MAX_THREADS if set (default 0); results are the\n"
+          "                         same for any N\n"
           "  --force                overwrite existing output files\n"
           "  --quiet                no progress or warnings\n"
           "  --json                 print a machine-readable summary on standard output\n"
@@ -264,6 +268,16 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
         return false;
       }
       commandLine.Pipeline.Refine = text == "spectral";
+    }
+    else if (option == "--threads")
+    {
+      int number = 0;
+      if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 1024)
+      {
+        error = error.empty() ? "--threads needs an integer from 0 to 1024, not '" + text + "'" : error;
+        return false;
+      }
+      commandLine.Pipeline.NumberOfThreads = number;
     }
     else if (option == "--basis-size")
     {

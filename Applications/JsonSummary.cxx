@@ -137,6 +137,7 @@ std::string JsonSummary(const std::string& source, const std::string& target,
        << ",\n  \"euler_angles_zyz\": " << Array(result.Aligned, "EulerAngles", 3)
        << ",\n  \"correlation_score\": " << Number(FieldValue(result.Aligned, "CorrelationScore"))
        << ",\n  \"registration_error\": " << Number(FieldValue(result.Aligned, "RegistrationError"))
+       << ",\n  \"threads\": " << Number(FieldValue(result.Aligned, "NumberOfThreadsUsed"))
        << ",\n  \"candidates\": [";
   vtkDataArray* transforms = result.Aligned->GetFieldData()->GetArray("CandidateTransforms");
   vtkDataArray* scores = result.Aligned->GetFieldData()->GetArray("CandidateScores");
@@ -179,6 +180,7 @@ std::string SymmetryJsonSummary(
        << ",\n  \"mirror_plane_twist\": " << Number(FieldValue(symmetry, "MirrorPlaneTwist"))
        << ",\n  \"mean_asymmetry\": " << Number(FieldValue(symmetry, "MeanAsymmetry"))
        << ",\n  \"max_asymmetry\": " << Number(FieldValue(symmetry, "MaximumAsymmetry"))
+       << ",\n  \"threads\": " << Number(FieldValue(symmetry, "NumberOfThreadsUsed"))
        << ",\n  \"candidates\": [";
   vtkFieldData* fields = symmetry->GetFieldData();
   vtkDataArray* transforms = fields->GetArray("CandidateTransforms");

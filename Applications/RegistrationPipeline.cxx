@@ -1,5 +1,6 @@
 #include "RegistrationPipeline.h"
 
+#include "ParallelFor.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
 #include "vtkMobiusCenter.h"
@@ -20,7 +21,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <mutex>
 #include <utility>
 
@@ -172,9 +172,10 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
   vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
   const char* which[2] = { "source", "target" };
+  const int threads = mobius::ResolveThreadCount(options.NumberOfThreads);
   // The two meshes' conformal maps and centerings are independent, and the conformal flow
-  // runs on one core: the target's runs in a second thread beside the source's (on the
-  // man, 17,495 vertices: 0.5 s of a ~3 s job). Each job times and reports into its own
+  // runs on one core: with two threads or more the target's runs beside the source's (on
+  // the man, 17,495 vertices: 0.5 s of a ~3 s job). Each job times and reports into its own
   // result; they are merged in the order source, target.
   std::mutex progressLock;
   const StageProgress sharedProgress = [&](const std::string& stage, double fraction) {
@@ -202,25 +203,15 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   // One mesh given as both inputs is mapped twice in turn: VTK builds a mesh's cell
   // structures lazily on first read, so two filters may not read it at once.
   const bool sideBySide = source != target;
-  std::future<bool> targetJob;
-  if (sideBySide)
-  {
-    targetJob = std::async(std::launch::async, mapAndCenter, 1);
-  }
-  bool ok[2];
-  try
-  {
-    ok[0] = mapAndCenter(0);
-  }
-  catch (...)
-  {
-    if (sideBySide)
+  bool ok[2] = { false, false };
+  // In turn (one thread) the target is not mapped after the source failed. ParallelFor
+  // carries an exception of either job here once both are done.
+  mobius::ParallelFor(2, sideBySide ? threads : 1, [&](int k, int) {
+    if (k == 0 || sideBySide || ok[0])
     {
-      targetJob.wait(); // the target's job uses this frame's variables
+      ok[k] = mapAndCenter(k);
     }
-    throw;
-  }
-  ok[1] = sideBySide ? targetJob.get() : ok[0] && mapAndCenter(1);
+  });
   for (int k = 0; k < 2; ++k)
   {
     result.Stages.insert(result.Stages.end(), parts[k].Stages.begin(), parts[k].Stages.end());
@@ -242,6 +233,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   registration->SetSmoothingTime(options.SmoothingTime);
   registration->SetTransformMode(options.TransformMode);
   registration->SetNumberOfCandidates(options.NumberOfCandidates);
+  registration->SetNumberOfThreads(threads);
   if (!RunStage(registration, "rotational alignment", sourceName + " -> " + targetName, progress,
         result, result.Aligned, error))
   {
@@ -252,6 +244,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   correspondence->SetSourceData(result.Aligned);
   correspondence->SetTargetData(result.TargetCentered);
   correspondence->SetOutputGeometry(options.OutputGeometry);
+  correspondence->SetNumberOfThreads(threads);
   if (!RunStage(correspondence, "dense correspondence", sourceName + " -> " + targetName,
         progress, result, result.MobiusCorrespondence, error))
   {
@@ -284,6 +277,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   refinement->SetOutputGeometry(options.OutputGeometry);
   refinement->SetBasisSize(options.BasisSize);
   refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), options.BasisSize));
+  refinement->SetNumberOfThreads(threads);
   return finish(RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress,
     result, result.Correspondence, error));
 }
@@ -314,6 +308,7 @@ bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
   detection->SetNumberOfCandidates(options.NumberOfCandidates);
   detection->SetRefine(options.Refine);
   detection->SetBasisSize(options.BasisSize);
+  detection->SetNumberOfThreads(options.NumberOfThreads);
   const size_t warnings = result.Warnings.size();
   if (!RunStage(detection, "symmetry detection", name, progress, result, result.Correspondence, error))
   {

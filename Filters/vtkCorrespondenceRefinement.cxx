@@ -21,7 +21,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <sstream>
 
 vtkStandardNewMacro(vtkCorrespondenceRefinement);
@@ -205,19 +204,19 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       lapStart = now;
       return seconds;
     };
-    // The two eigenbases are independent: compute them side by side.
+    const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
+    // The two eigenbases are independent (each solve runs on one core): side by side when
+    // there are two threads.
     mobius::SpectralSurface surfaces[2];
     std::string errors[2];
-    auto prepare = [&](int k) {
-      return mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles, this->BasisSize,
-        this->NumberOfSamples, surfaces[k], errors[k]);
-    };
-    auto targetReady = std::async(std::launch::async, prepare, 1);
-    const bool sourceOk = prepare(0);
-    const bool targetOk = targetReady.get();
+    bool prepared[2] = { false, false };
+    mobius::ParallelFor(2, threads, [&](int k, int) {
+      prepared[k] = mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles,
+        this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k]);
+    });
     for (int k = 0; k < 2; ++k)
     {
-      if (!(k == 0 ? sourceOk : targetOk))
+      if (!prepared[k])
       {
         vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << errors[k] << ".");
         return 0;
@@ -242,6 +241,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     parameters.Growth = this->BasisGrowth;
     parameters.FinalSize = std::min(this->ScreeningBasisSize, this->BasisSize);
     parameters.FullResolutionIterations = this->FullResolutionIterations;
+    parameters.NumberOfThreads = threads;
 
     // Every candidate up to the screening size; the one of the expected orientation with the
     // most orthogonal functional map goes on.
@@ -261,8 +261,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     std::vector<mobius::SampleMap> screened(starts.size());
     mobius::ZoomOutParameters oneThread = parameters;
     oneThread.NumberOfThreads = 1;
-    mobius::ParallelFor(static_cast<int>(starts.size()),
-      mobius::ResolveThreadCount(parameters.NumberOfThreads), [&](int c, int) {
+    mobius::ParallelFor(static_cast<int>(starts.size()), threads, [&](int c, int) {
         screened[c] = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
           StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
           oneThread);
@@ -331,6 +330,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
     const double seconds[3] = { basisSeconds, candidateSeconds, extensionSeconds };
     mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 3);
+    mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
   }
   this->UpdateProgress(1.0);
   return 1;
@@ -348,4 +348,5 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FullResolutionIterations: " << this->FullResolutionIterations << "\n";
   os << indent << "SearchCandidates: " << this->SearchCandidates << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -38,7 +38,8 @@
  *   `RefinementOrientationRepaired` (1 if the kept candidate came out mirrored and was
  *   repaired), `RefinementBasisSize`;
  * - `RefinementStageSeconds` (3 values): eigenbases, candidate search, extension to every
- *   vertex.
+ *   vertex;
+ * - `NumberOfThreadsUsed`.
  *
  * Errors: inputs that are not spherical maps with `SurfacePoints`, meshes too small for
  * the basis, a Laplacian that cannot be factorized or an eigensolver that does not converge.
@@ -152,6 +153,18 @@ public:
   void SetOutputGeometryToSource() { this->SetOutputGeometry(SOURCE); }
   ///@}
 
+  ///@{
+  /**
+   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
+   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
+   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
+   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
+   * `NumberOfThreadsUsed` reports the count the filter ran with.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkCorrespondenceRefinement();
   ~vtkCorrespondenceRefinement() override = default;
@@ -169,6 +182,7 @@ protected:
   bool SearchCandidates = true;
   bool RepairOrientation = true;
   int OutputGeometry = TARGET;
+  int NumberOfThreads = 0;
 
 private:
   vtkCorrespondenceRefinement(const vtkCorrespondenceRefinement&) = delete;

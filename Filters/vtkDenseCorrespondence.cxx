@@ -1,5 +1,6 @@
 #include "vtkDenseCorrespondence.h"
 
+#include "ParallelFor.h"
 #include "SphericalPointLocator.h"
 #include "vtkCorrespondenceOutput.h"
 #include "vtkSphericalMapData.h"
@@ -104,7 +105,8 @@ int vtkDenseCorrespondence::ComputeOutput(
     this->UpdateProgress(0.2 + 0.6 * fraction);
     return !this->GetAbortExecute();
   };
-  if (!locator.LocateAll(points[query], locations, 0, progress))
+  const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
+  if (!locator.LocateAll(points[query], locations, threads, progress))
   {
     if (!this->GetAbortExecute())
     {
@@ -129,6 +131,7 @@ int vtkDenseCorrespondence::ComputeOutput(
 
   mobius::vtk::SetFieldValue(output->GetFieldData(), "ClampedPoints", static_cast<double>(clamped));
   mobius::vtk::SetFieldValue(output->GetFieldData(), "MaximumClampDistance", maximumClampDistance);
+  mobius::vtk::SetFieldValue(output->GetFieldData(), "NumberOfThreadsUsed", threads);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -139,4 +142,5 @@ void vtkDenseCorrespondence::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
   os << indent << "Direction: " << this->Direction << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

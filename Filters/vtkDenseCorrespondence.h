@@ -33,8 +33,8 @@
  * vertex. A transferred array whose name the source already uses is renamed
  * `<name>_Target`: the source's `InputPointId` (its input vertex numbers) passes through,
  * and `InputPointId_Target` (always so named) is the input number of the nearest target
- * vertex. Field data: `ClampedPoints`, `MaximumClampDistance` (radians), and the source's
- * field data.
+ * vertex. Field data: `ClampedPoints`, `MaximumClampDistance` (radians),
+ * `NumberOfThreadsUsed`, and the source's field data.
  *
  * Errors: an input missing, empty, not on the unit sphere or without `SurfacePoints`, or
  * with a triangle that refers to a point id out of range.
@@ -96,6 +96,18 @@ public:
   void SetDirectionToTargetToSource() { this->SetDirection(TARGET_TO_SOURCE); }
   ///@}
 
+  ///@{
+  /**
+   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
+   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
+   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
+   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
+   * `NumberOfThreadsUsed` reports the count the filter ran with.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkDenseCorrespondence();
   ~vtkDenseCorrespondence() override = default;
@@ -107,6 +119,7 @@ protected:
 
   int OutputGeometry = TARGET;
   int Direction = SOURCE_TO_TARGET;
+  int NumberOfThreads = 0;
 
 private:
   vtkDenseCorrespondence(const vtkDenseCorrespondence&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkSO3Register.h"
 
+#include "ParallelFor.h"
 #include "SO3Correlation.h"
 #include "ScaleFactorSignal.h"
 #include "vtkSphericalMapData.h"
@@ -139,8 +140,10 @@ int vtkSO3Register::ComputeOutput(
     return 0;
   }
 
+  const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
   mobius::ScaleFactorSignalParameters parameters;
   parameters.Resolution = this->Resolution;
+  parameters.NumberOfThreads = threads;
   parameters.SmoothingTime = this->SmoothingTime;
   parameters.Value = this->ValueMode == 0 ? mobius::ScaleFactorValue::AreaRatio
                                           : mobius::ScaleFactorValue::SquareRootAreaRatio;
@@ -182,6 +185,7 @@ int vtkSO3Register::ComputeOutput(
 
   mobius::SO3CorrelationOptions options;
   options.NumberOfCandidates = this->NumberOfCandidates;
+  options.NumberOfThreads = threads;
   options.Reflections = static_cast<mobius::SO3ReflectionMode>(this->TransformMode);
   // The correlation (grid search and Newton refinement) is half the work or more at high
   // Resolution: it reports progress and hears the abort button too.
@@ -219,6 +223,7 @@ int vtkSO3Register::ComputeOutput(
   mobius::vtk::SetFieldValue(fieldData, "CorrelationCoefficient", result.CorrelationCoefficient);
   mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationBandwidth", result.CorrelationBandwidth);
+  mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
   std::vector<std::vector<double>> transforms, scores, errors, coefficients;
   for (const auto& candidate : result.Candidates)
   {
@@ -245,4 +250,5 @@ void vtkSO3Register::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValueMode: " << this->ValueMode << "\n";
   os << indent << "TransformMode: " << this->TransformMode << "\n";
   os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

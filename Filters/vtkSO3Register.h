@@ -28,7 +28,8 @@
  *   (vtkSymmetryDetection's symmetry distance is made of it);
  * - `CandidateTransforms` (K tuples of 9), `CandidateScores`, `CandidateRegistrationErrors`,
  *   `CandidateCorrelationCoefficients` (K tuples each), best first;
- * - `Resolution`, `CorrelationBandwidth` (the bands used by the grid search).
+ * - `Resolution`, `CorrelationBandwidth` (the bands used by the grid search);
+ * - `NumberOfThreadsUsed`.
  *
  * Errors: an input that is not a spherical map (or has a triangle referring to a point id
  * out of range), missing or invalid `SurfaceArea`, Resolution odd or below 4, a Resolution
@@ -130,6 +131,18 @@ public:
   vtkGetMacro(NumberOfCandidates, int);
   ///@}
 
+  ///@{
+  /**
+   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
+   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
+   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
+   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
+   * `NumberOfThreadsUsed` reports the count the filter ran with.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkSO3Register();
   ~vtkSO3Register() override = default;
@@ -144,6 +157,7 @@ protected:
   int ValueMode = 1;
   int TransformMode = ROTATIONS;
   int NumberOfCandidates = 4;
+  int NumberOfThreads = 0;
 
 private:
   vtkSO3Register(const vtkSO3Register&) = delete;

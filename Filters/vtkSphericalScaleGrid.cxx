@@ -1,5 +1,6 @@
 #include "vtkSphericalScaleGrid.h"
 
+#include "ParallelFor.h"
 #include "ScaleFactorSignal.h"
 #include "vtkSphericalMapData.h"
 
@@ -174,8 +175,10 @@ int vtkSphericalScaleGrid::ComputeOutput(
     return 0;
   }
 
+  const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
   mobius::ScaleFactorSignalParameters parameters;
   parameters.Resolution = this->Resolution;
+  parameters.NumberOfThreads = threads;
   parameters.SmoothingTime = this->SmoothingTime;
   parameters.Value = this->ValueMode == AREA_RATIO ? mobius::ScaleFactorValue::AreaRatio
                                                    : mobius::ScaleFactorValue::SquareRootAreaRatio;
@@ -209,6 +212,7 @@ int vtkSphericalScaleGrid::ComputeOutput(
   mobius::vtk::SetFieldValue(fieldData, "TotalArea", signal.Grid.TotalArea);
   mobius::vtk::SetFieldValue(fieldData, "SmoothingTime", this->SmoothingTime);
   mobius::vtk::SetFieldValue(fieldData, "ValueMode", this->ValueMode);
+  mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
   const std::vector<double> energies = mobius::DegreeEnergies(signal.Coefficients);
   mobius::vtk::SetFieldValues(
     fieldData, "DegreeEnergies", energies.data(), static_cast<int>(energies.size()));
@@ -224,4 +228,5 @@ void vtkSphericalScaleGrid::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
   os << indent << "ValueMode: " << this->ValueMode << "\n";
   os << indent << "DisplaceByValue: " << this->DisplaceByValue << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

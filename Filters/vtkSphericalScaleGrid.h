@@ -18,7 +18,8 @@
  * elsewhere; cell j*N + i is grid cell (j, i)) with cell data `ConformalFactor` (the cell
  * values) and `ConformalFactorSmoothed` (the low-passed signal at the cell centers), and
  * field data `Resolution`, `Bandwidth`, `TotalArea` (the surface area, equal to the sum of
- * lambda times cell area), `SmoothingTime`, `ValueMode` (0: lambda, 1: sqrt(lambda)) and
+ * lambda times cell area), `SmoothingTime`, `ValueMode` (0: lambda, 1: sqrt(lambda)),
+ * `NumberOfThreadsUsed` and
  * `DegreeEnergies` (B values: the smoothed signal's energy in each spherical-harmonic
  * degree l, the sum over m of |f_lm|^2; unchanged by rotating or mirroring the map, so
  * shapes can be compared by it before any alignment). With
@@ -94,6 +95,18 @@ public:
   vtkBooleanMacro(DisplaceByValue, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
+   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
+   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
+   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
+   * `NumberOfThreadsUsed` reports the count the filter ran with.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkSphericalScaleGrid();
   ~vtkSphericalScaleGrid() override = default;
@@ -106,6 +119,7 @@ protected:
   double SmoothingTime = 5e-4;
   int ValueMode = SQUARE_ROOT_AREA_RATIO;
   vtkTypeBool DisplaceByValue = false;
+  int NumberOfThreads = 0;
 
 private:
   vtkSphericalScaleGrid(const vtkSphericalScaleGrid&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkSymmetryDetection.h"
 
+#include "ParallelFor.h"
 #include "SymmetryMeasures.h"
 #include "VertexSnapping.h"
 #include "vtkCorrespondenceOutput.h"
@@ -222,6 +223,8 @@ int vtkSymmetryDetection::ComputeOutput(
     }
   }
 
+  // Resolved once, so that every stage runs with the same count.
+  const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
   // The map against itself, orientation-reversing transforms only: the mirror symmetries.
   vtkNew<vtkSO3Register> registration;
   registration->SetSourceData(centered);
@@ -230,6 +233,7 @@ int vtkSymmetryDetection::ComputeOutput(
   registration->SetSmoothingTime(this->SmoothingTime);
   registration->SetNumberOfCandidates(this->NumberOfCandidates);
   registration->SetTransformModeToReflections();
+  registration->SetNumberOfThreads(threads);
   vtkSmartPointer<vtkPolyData> reflected = run(registration, "reflective registration", 0.35, 0.5);
   if (!reflected)
   {
@@ -256,6 +260,7 @@ int vtkSymmetryDetection::ComputeOutput(
     refinement->SetBasisSize(this->BasisSize);
     refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), this->BasisSize));
     refinement->SetOutputGeometryToSource();
+    refinement->SetNumberOfThreads(threads);
     symmetric = run(refinement, "refinement", 0.5, 0.95);
   }
   else
@@ -264,6 +269,7 @@ int vtkSymmetryDetection::ComputeOutput(
     correspondence->SetSourceData(reflected);
     correspondence->SetTargetData(centered);
     correspondence->SetOutputGeometryToSource();
+    correspondence->SetNumberOfThreads(threads);
     symmetric = run(correspondence, "dense correspondence", 0.5, 0.95);
   }
   if (!symmetric)
@@ -388,6 +394,7 @@ int vtkSymmetryDetection::ComputeOutput(
   mobius::vtk::SetFieldValue(fieldData, "SymmetryCentered", this->Centering ? 1 : 0);
   mobius::vtk::SetFieldValue(fieldData, "SymmetryRefined", refine ? 1 : 0);
   mobius::vtk::SetFieldValue(fieldData, "SnappedVertices", static_cast<double>(snapped));
+  mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -403,4 +410,5 @@ void vtkSymmetryDetection::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Refine: " << this->Refine << "\n";
   os << indent << "BasisSize: " << this->BasisSize << "\n";
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

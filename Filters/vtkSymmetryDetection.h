@@ -44,7 +44,8 @@
  *   `CandidateMirrorPlaneNormals` (one tuple per candidate);
  * - `MeanAsymmetry`, `MaximumAsymmetry` of `Asymmetry`;
  * - `SymmetryCentered` (1 if the map was centered), `SymmetryRefined` (1 if refined),
- *   `SnappedVertices` (how many images `SnapTolerance` put exactly on a vertex).
+ *   `SnappedVertices` (how many images `SnapTolerance` put exactly on a vertex);
+ * - `NumberOfThreadsUsed` (every stage runs with this count).
  *
  * Errors (vtkErrorMacro, no output): an input the stages reject (open, non-manifold,
  * genus > 0, ...), with the stage's reason. A mesh with fewer than 2 x `BasisSize` vertices
@@ -130,6 +131,18 @@ public:
   vtkGetMacro(SnapTolerance, double);
   ///@}
 
+  ///@{
+  /**
+   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
+   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
+   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
+   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
+   * `NumberOfThreadsUsed` reports the count the filter ran with.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
 protected:
   vtkSymmetryDetection();
   ~vtkSymmetryDetection() override = default;
@@ -144,6 +157,7 @@ protected:
   bool Refine = true;
   int BasisSize = 80;
   double SnapTolerance = 1e-3;
+  int NumberOfThreads = 0;
 
 private:
   vtkSymmetryDetection(const vtkSymmetryDetection&) = delete;

@@ -39,6 +39,7 @@ DEFAULT_OPTIONS = {
     "fill_holes": False,          # close holes instead of rejecting open meshes
     "keep_largest_component": False,
     "allow_poor_maps": False,     # accept degenerate conformal maps instead of raising
+    "threads": 0,                 # threads per threaded filter (0: automatic); same results
 }
 _TRANSFORM_MODES = {"rotation": 0, "reflection": 1, "both": 2}
 
@@ -218,7 +219,9 @@ def register(source, target, **options):
     Options (defaults as mobius-register's): refine=True, basis_size=80, resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
     iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,
-    allow_poor_maps=False.
+    allow_poor_maps=False, threads=0 (threads of each threaded filter, 0 to 1024; 0 is one
+    per core this process may run on, at most VTK_SMP_MAX_THREADS when set; the result is
+    the same for any count, and `fields["NumberOfThreadsUsed"]` says what ran).
 
     Raises RegistrationError (with the filter's message) when a mesh cannot be read or
     mapped, TypeError for an unknown option, ValueError for a malformed one.
@@ -233,6 +236,9 @@ def register(source, target, **options):
     resolution = int(options["resolution"])
     if resolution < 4 or resolution % 2:
         raise ValueError(f"resolution must be an even number >= 4, got {options['resolution']!r}")
+    threads = options["threads"]
+    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 0 <= threads <= 1024:
+        raise ValueError(f"threads must be an integer from 0 to 1024, got {threads!r}")
 
     errors = _Errors()
     source_mesh, source_name = _as_polydata(source, "source", errors)
@@ -247,6 +253,7 @@ def register(source, target, **options):
     registration.SetSmoothingTime(float(options["smoothing"]))
     registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
     registration.SetNumberOfCandidates(int(options["candidates"]))
+    registration.SetNumberOfThreads(int(threads))
 
     basis_size = int(options["basis_size"])
     refine = bool(options["refine"])
@@ -263,6 +270,7 @@ def register(source, target, **options):
         correspondence.SetScreeningBasisSize(min(correspondence.GetScreeningBasisSize(), basis_size))
     else:
         correspondence = errors.watch(vtkDenseCorrespondence())
+    correspondence.SetNumberOfThreads(int(threads))
     correspondence.SetSourceConnection(registration.GetOutputPort())
     correspondence.SetTargetData(target_map)
     correspondence.Update()

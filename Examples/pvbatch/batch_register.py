@@ -10,7 +10,9 @@ template's centered map, refines the correspondence (Refine Correspondence; --no
 the paper's Möbius-only map) and writes DIR/<mesh>-to-template.vtp (the mesh placed on the
 template surface, with TargetCellId, TargetBarycentric, MappedPoints and the template's
 point arrays). Rank 0 gathers one summary line per mesh into DIR/summary.csv; a mesh that
-cannot be mapped gets its error message there and does not stop the others.
+cannot be mapped gets its error message there and does not stop the others. Each rank runs
+the threaded filters with its share of the cores (--threads, default: max(1, cores / K), cores
+the CPUs of its affinity mask, K the ranks of the node sharing them).
 """
 import argparse
 import csv
@@ -29,8 +31,12 @@ parser.add_argument("--no-refine", action="store_true",
                     help="keep the Möbius map (Dense Correspondence) instead of refining it")
 parser.add_argument("--max-failures", type=int, default=0,
                     help="exit with status 1 when more meshes than this fail (default 0)")
+parser.add_argument("--threads", type=int, default=0, metavar="N",
+                    help="threads per rank, 0 to 1024 (default 0: this rank's share of the cores)")
 parser.add_argument("meshes", nargs="+")
 args = parser.parse_args()
+if not 0 <= args.threads <= 1024:
+    parser.error("--threads must be from 0 to 1024")
 
 # The filters' Python package sits beside the plugin: from <libdir>/paraview-5.11/plugins/
 # MobiusRegistration/ up to the folder holding python3/dist-packages (lib/, also when the
@@ -51,6 +57,19 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
 
 comm = MPI.COMM_WORLD
 rank, size = comm.Get_rank(), comm.Get_size()
+
+
+def share_of_cores():
+    """max(1, cores / K): the CPUs of this rank's affinity mask over the ranks of the node
+    whose masks overlap it (ranks bound to their own cores keep them all)."""
+    cores = os.sched_getaffinity(0)
+    node = comm.Split_type(MPI.COMM_TYPE_SHARED)
+    sharing = sum(1 for other in node.allgather(sorted(cores)) if cores & set(other))
+    node.Free()
+    return max(1, len(cores) // sharing)
+
+
+threads = args.threads or share_of_cores()
 
 
 class Errors:
@@ -112,8 +131,10 @@ for path in args.meshes[rank::size]:
     registration.SetSourceData(source)
     registration.SetTargetData(template)
     registration.SetResolution(args.resolution)
+    registration.SetNumberOfThreads(threads)
     # The refinement needs at least twice its basis size (80) of vertices on each surface.
     correspondence = errors.watch(vtkDenseCorrespondence() if args.no_refine else vtkCorrespondenceRefinement())
+    correspondence.SetNumberOfThreads(threads)
     correspondence.SetSourceConnection(registration.GetOutputPort())
     correspondence.SetTargetData(template)
     writer = vtkXMLPolyDataWriter()

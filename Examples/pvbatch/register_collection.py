@@ -11,8 +11,11 @@ Per shape, once: the conformal map, its Möbius centering and a rotation-invaria
 DegreeEnergies). They are cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
 and of the parameters, so a rerun, or a run with meshes added, redoes only what is new; pair
 results are cached the same way. Ranks take shapes, then pairs, one at a time from a shared
-counter (dynamic balancing: large meshes do not hold the others up); each rank gets its share
-of the cores (VTK_SMP_MAX_THREADS).
+counter (dynamic balancing: large meshes do not hold the others up); each rank runs the
+threaded filters with its share of the cores (their NumberOfThreads): max(1, cores / K), cores
+the CPUs this rank may use (its affinity mask) and K the ranks of the node that share them
+(all of the node's ranks, unless the launcher bound them to separate cores). The results do
+not depend on the thread count, so any number of ranks gives the same tables.
 
 Modes: `all` registers every pair; `template` every mesh to --template; `nearest` only each
 shape's --neighbours nearest shapes by descriptor, for collections too large for all pairs.
@@ -26,7 +29,8 @@ Outputs in RESULTS:
   d = sqrt((1 - rho) / 2), rho the correlation coefficient of the aligned scale-factor
   signals (0: identical up to a conformal change; about 0.7: unrelated), rows and columns
   ordered by an average-linkage clustering (blank or black: pair not registered);
-- run.json: what was computed and what came from the cache;
+- run.json: what was computed and what came from the cache, and the threads of each rank
+  (threads_per_rank, indexed by rank);
 - with --write-maps, maps/SOURCE-to-TARGET.vtp (Dense Correspondence's data contract).
 """
 import argparse
@@ -52,7 +56,7 @@ parser.add_argument("--refine", choices=("spectral", "none"), default="spectral"
                     help="refine each pair's map (default) or keep the Möbius map")
 parser.add_argument("--write-maps", action="store_true", help="also write each pair's dense map")
 parser.add_argument("--threads", type=int, default=0,
-                    help="threads per rank (default 0: this rank's share of the cores)")
+                    help="threads per rank, 0 to 1024 (default 0: this rank's share of the cores)")
 parser.add_argument("--max-failures", type=int, default=0,
                     help="exit with status 1 when more meshes or pairs than this fail (default 0)")
 parser.add_argument("meshes", nargs="+")
@@ -75,6 +79,8 @@ def fail(message):
 
 if args.mode == "template" and not args.template:
     fail("--mode template needs --template MESH")
+if not 0 <= args.threads <= 1024:
+    fail("--threads must be from 0 to 1024")
 if args.neighbours < 1:
     fail("--neighbours must be at least 1")
 if args.resolution < 4 or args.resolution % 2:
@@ -96,16 +102,20 @@ if args.plugin:
 
 
 def share_of_cores():
-    """Threads for this rank: its CPU affinity (a launcher that binds ranks has already split
-    the cores), otherwise the node's cores divided among the ranks on the node."""
-    available = len(os.sched_getaffinity(0))
-    ranks_here = comm.Split_type(MPI.COMM_TYPE_SHARED).Get_size() if comm else 1
-    return max(1, min(available, (os.cpu_count() or available) // ranks_here))
+    """Threads for this rank: max(1, cores / K), cores the CPUs of its affinity mask and K the
+    ranks on this node whose masks overlap it (a launcher that binds each rank to its own
+    cores leaves K = 1; unbound ranks all share the node's cores)."""
+    cores = os.sched_getaffinity(0)
+    sharing = 1
+    if comm:
+        node = comm.Split_type(MPI.COMM_TYPE_SHARED)
+        sharing = sum(1 for other in node.allgather(sorted(cores)) if cores & set(other))
+        node.Free()
+    return max(1, len(cores) // sharing)
 
 
-# The core's automatic thread count honours VTK_SMP_MAX_THREADS; set before any filter runs.
 threads = args.threads if args.threads > 0 else share_of_cores()
-os.environ["VTK_SMP_MAX_THREADS"] = str(threads)
+threads_per_rank = comm.allgather(threads) if comm else [threads]
 
 from mobiusregistration import (  # noqa: E402
     vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register,
@@ -270,6 +280,7 @@ def map_shape(i):
     grid = errors.watch(vtkSphericalScaleGrid())
     grid.SetInputConnection(center.GetOutputPort())
     grid.SetResolution(SHAPE_PARAMETERS["descriptor_resolution"])
+    grid.SetNumberOfThreads(threads)
     grid.Update()
     record = {"status": "failed", "error": "", "vertices": 0, "energies": [], "rank": rank}
     mapped = conformal.GetOutput()
@@ -343,8 +354,10 @@ def register_pair(p):
     registration.SetSourceData(source_map)
     registration.SetTargetData(target_map)
     registration.SetResolution(args.resolution)
+    registration.SetNumberOfThreads(threads)
     correspondence = errors.watch(vtkCorrespondenceRefinement() if args.refine == "spectral"
                                   else vtkDenseCorrespondence())
+    correspondence.SetNumberOfThreads(threads)
     correspondence.SetSourceConnection(registration.GetOutputPort())
     correspondence.SetTargetData(target_map)
     correspondence.Update()
@@ -471,7 +484,7 @@ if rank == 0:
         write_heat_map(ordered.tolist(), os.path.join(args.output, "distances.png"))
     seconds = time.perf_counter() - started
     summary = {
-        "ranks": size, "threads_per_rank": threads, "seconds": seconds, "mode": args.mode,
+        "ranks": size, "threads_per_rank": threads_per_rank, "seconds": seconds, "mode": args.mode,
         "shapes": len(meshes), "shapes_failed": shape_failures,
         "shapes_computed": sum(1 for s in shapes.values() if not s["cached"]),
         "pairs": len(pairs), "pairs_failed": pair_failures,
@@ -482,7 +495,8 @@ if rank == 0:
     write_json_atomically(os.path.join(args.output, "run.json"), summary)
     print(f"{len(ok)} of {len(meshes)} shapes mapped ({summary['shapes_computed']} computed), "
           f"{len(pairs) - pair_failures} of {len(pairs)} pairs registered ({summary['pairs_computed']} computed) "
-          f"on {size} ranks x {threads} threads in {seconds:.1f} s; see {args.output}")
+          f"on {size} ranks x {'/'.join(map(str, sorted(set(threads_per_rank))))} threads in {seconds:.1f} s; "
+          f"see {args.output}")
     for i in range(len(meshes)):
         if shapes[i]["status"] != "ok":
             print(f"{meshes[i]}: {shapes[i]['error']}", file=sys.stderr)

@@ -1,4 +1,5 @@
-"""Test of register_collection.py: the same pairs on 2 MPI ranks as on one process, a failing
+"""Test of register_collection.py: the same pairs, to the last digit, on 2 MPI ranks (one thread
+each) as on one process (a thread per core), the threads of each rank in run.json, a failing
 mesh recorded without stopping the others, the cache (a rerun computes nothing; a byte-identical
 copy is recognized; a new mesh computes only itself and its pairs), and the nearest mode.
 
@@ -49,7 +50,8 @@ NUMBERS = ("determinant", "correlation_score", "correlation_coefficient", "regis
 
 
 def same_pairs(a, b):
-    """Equal up to row order, apart from timing, rank and cache columns."""
+    """Equal up to row order, apart from timing, rank and cache columns: every number as
+    written (the filters give the same bits on any number of threads)."""
     key = lambda row: (row["source"], row["target"])  # noqa: E731
     a, b = sorted(a, key=key), sorted(b, key=key)
     if [key(r) for r in a] != [key(r) for r in b]:
@@ -57,10 +59,9 @@ def same_pairs(a, b):
     for x, y in zip(a, b):
         if x["status"] != y["status"]:
             return False
-        values = [(x[c], y[c]) for c in NUMBERS] + list(zip(x["transform"].split(), y["transform"].split()))
-        for u, v in values:
-            if abs(float(u or 0) - float(v or 0)) > 1e-5:
-                return False
+        if [x[c] for c in NUMBERS + ("transform",)] != [y[c] for c in NUMBERS + ("transform",)]:
+            print("differ:", x, y, sep="\n")
+            return False
     return True
 
 
@@ -88,10 +89,16 @@ for i in range(3):
         check(matrix[i][j] == matrix[j][i], "symmetric matrix")
         check(i == j or 0.05 < matrix[i][j] < math.sqrt(0.5), f"distance of different shapes {matrix[i][j]}")
 check(os.path.getsize(os.path.join(parallel, "distances.png")) > 100, "heat map written")
+# Each rank's share of the cores: max(1, cores / 2) unbound, its own cores when mpiexec binds.
+cores = len(os.sched_getaffinity(0))
+threads = run_summary(parallel)["threads_per_rank"]
+check(len(threads) == 2 and all(1 <= t <= max(1, cores // 2) for t in threads),
+      f"two ranks, each with its share of the {cores} cores: {threads}")
 
 # 2. One process (pvbatch without MPI): the same pairs.
 serial = os.path.join(scratch, "one-process")
 run(1, serial, "--max-failures", "1")
+check(run_summary(serial)["threads_per_rank"] == [cores], "one process: a thread per core it may use")
 check(same_pairs(pairs, table(os.path.join(serial, "pairs.csv"))), "one process and two ranks agree")
 
 # 3. A rerun computes nothing and gives the same table.

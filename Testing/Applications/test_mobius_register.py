@@ -73,6 +73,18 @@ if code == 0:
     check(json.loads(out)["registration_error"] < 1e-3, "hand self registration error")
     check(os.path.exists(os.path.join(work, "hand.vtp")) and os.path.exists(os.path.join(work, "hand.csv")),
           "hand outputs")
+    limit = os.environ.get("VTK_SMP_MAX_THREADS", "")
+    automatic = len(os.sched_getaffinity(0))
+    automatic = min(automatic, int(limit)) if limit.isdigit() and int(limit) > 0 else automatic
+    check(json.loads(out)["threads"] == automatic, "automatic threads: the affinity's cores")
+# --threads: the same map on one thread and on three (the CSV to the last digit).
+code, out, err = run(hand, hand, "-o", "hand-3", "--resolution", "64", "--json", "--quiet", "--threads", "3")
+check(code == 0 and json.loads(out)["threads"] == 3, f"--threads 3: {code} {err}")
+code, out, err = run(hand, hand, "-o", "hand-1", "--resolution", "64", "--json", "--quiet", "--threads", "1")
+check(code == 0 and json.loads(out)["threads"] == 1, f"--threads 1: {code} {err}")
+if code == 0:
+    with open(os.path.join(work, "hand-1.csv")) as one, open(os.path.join(work, "hand-3.csv")) as three:
+        check(one.read() == three.read(), "--threads 1 and --threads 3 give the same CSV")
 
 
 missing = os.path.join(work, "no-such-mesh.off")
@@ -190,7 +202,8 @@ expect_failure(["/dev/zero", hand, "-o", "notfile4"], ["/dev/zero"], ["notfile4"
 
 # Option values: NaN, infinities and absurd sizes are usage errors naming the option.
 for option, value in (("--smoothing", "nan"), ("--smoothing", "inf"), ("--smoothing", "1e308"),
-                      ("--tolerance", "nan"), ("--tolerance", "-inf"), ("--resolution", "100000")):
+                      ("--tolerance", "nan"), ("--tolerance", "-inf"), ("--resolution", "100000"),
+                      ("--threads", "-1"), ("--threads", "1025"), ("--threads", "two")):
     expect_failure([hand, hand, "-o", "option", option, value], [option], ["option"], code_expected=2,
                    timeout=60)
 code, _, err = run(hand, hand, "-o", "option", "--resolution", "100000")

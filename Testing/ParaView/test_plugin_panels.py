@@ -74,4 +74,14 @@ for name in ("SphericalConformalMap", "MobiusCenter", "SO3Register", "SphericalS
         # Even sizes only, up to what fits comfortably in memory; the default is offered.
         assert values and all(v % 2 == 0 and 16 <= v <= 2048 for v in values), (name, values)
         assert resolution.GetDefaultValue(0) in values, name
+# The threaded filters' thread count: an advanced, documented property, 0 (automatic) by
+# default; what ran is in the output's field data.
+for name in ("SO3Register", "SphericalScaleGrid", "DenseCorrespondence", "RefineCorrespondence", "DetectSymmetry"):
+    threads = servermanager.ProxyManager().GetPrototypeProxy("filters", name).GetProperty("NumberOfThreads")
+    assert threads is not None, name
+    assert threads.GetDefaultValue(0) == 0 and threads.GetPanelVisibility() == "advanced", name
+    assert threads.GetDocumentation().GetDescription(), name
+grid.NumberOfThreads = 1
+used = servermanager.Fetch(grid).GetFieldData().GetArray("NumberOfThreadsUsed").GetValue(0)
+assert used == 1, used
 print("default coloring, property groups, Resolution sizes and documentation: as documented")

@@ -47,6 +47,19 @@ struct GridPeak
   Eigen::Vector3d Euler;
 };
 
+// A strict total order on grid peaks, best first: by value, ties broken by position. Each
+// chunk of slices keeps its best peaks in this order, so the best of all chunks together are
+// the same however the slices were split among threads.
+bool IsBetter(const GridPeak& x, const GridPeak& y)
+{
+  if (x.Value != y.Value)
+  {
+    return x.Value > y.Value;
+  }
+  return std::lexicographical_compare(
+    x.Euler.data(), x.Euler.data() + 3, y.Euler.data(), y.Euler.data() + 3);
+}
+
 // Scans slices j = first .. last - 1 for local maxima over the 26 neighbours (α and γ wrap
 // around; below β = 0 and above β = π the grid continues as C(α, -β, γ) = C(α+π, β, γ+π)).
 // At β = 0 and π only γ = 0 is scanned: there C depends on α ± γ alone (and the duplicate
@@ -79,8 +92,7 @@ void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int kee
   };
   load(first - 1, window[0]);
   load(first, window[1]);
-  // Min-heap of the best `keep` local maxima.
-  auto worse = [](const GridPeak& x, const GridPeak& y) { return x.Value > y.Value; };
+  // Heap of the best `keep` local maxima, the worst of them at the front.
   std::vector<GridPeak> heap;
   for (int j = first; j < last; ++j)
   {
@@ -96,7 +108,7 @@ void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int kee
       for (int a = 0; a < M; ++a)
       {
         const double v = here[static_cast<std::size_t>(c) * M + a];
-        if (static_cast<int>(heap.size()) == keep && v <= heap.front().Value)
+        if (static_cast<int>(heap.size()) == keep && v < heap.front().Value)
         {
           continue;
         }
@@ -134,13 +146,13 @@ void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int kee
         if (static_cast<int>(heap.size()) < keep)
         {
           heap.push_back(peak);
-          std::push_heap(heap.begin(), heap.end(), worse);
+          std::push_heap(heap.begin(), heap.end(), IsBetter);
         }
-        else
+        else if (IsBetter(peak, heap.front()))
         {
-          std::pop_heap(heap.begin(), heap.end(), worse);
+          std::pop_heap(heap.begin(), heap.end(), IsBetter);
           heap.back() = peak;
-          std::push_heap(heap.begin(), heap.end(), worse);
+          std::push_heap(heap.begin(), heap.end(), IsBetter);
         }
       }
     }
@@ -343,14 +355,7 @@ std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
     gridPeaks.insert(gridPeaks.end(), f.begin(), f.end());
   }
   // Ties broken by position so the order does not depend on how the slices were split.
-  std::sort(gridPeaks.begin(), gridPeaks.end(), [](const GridPeak& x, const GridPeak& y) {
-    if (x.Value != y.Value)
-    {
-      return x.Value > y.Value;
-    }
-    return std::lexicographical_compare(x.Euler.data(), x.Euler.data() + 3, y.Euler.data(),
-      y.Euler.data() + 3);
-  });
+  std::sort(gridPeaks.begin(), gridPeaks.end(), IsBetter);
   if (static_cast<int>(gridPeaks.size()) > keep)
   {
     gridPeaks.resize(keep); // the best `keep` of all slices, whatever the split
@@ -372,15 +377,16 @@ std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
     }
     return true;
   };
-  // Grid peaks are taken in order; one not separated from an accepted (refined) peak is
-  // skipped, as is a refined one that climbed near a better accepted peak. For parallelism a
-  // batch takes consecutive peaks, up to one per thread, as long as each is also separated from
-  // the batch's earlier members (otherwise the batch ends there and that peak is looked at
-  // again once they are refined).
+  // Grid peaks are taken in order: one not separated from an accepted (refined) peak is
+  // skipped, otherwise it is refined and accepted unless it climbed near an accepted peak.
+  // For parallelism a batch of upcoming peaks, up to one per thread, is refined ahead, as long
+  // as each is separated from the batch's earlier members (otherwise the batch ends there);
+  // the batch is then accepted peak by peak with exactly the rule above, so a refinement made
+  // ahead for a peak that the rule skips is dropped, and the result is the one-thread result.
   std::size_t next = 0;
   while (next < gridPeaks.size() && static_cast<int>(accepted.size()) < wanted)
   {
-    std::vector<Peak> batchPeaks;
+    std::vector<Peak> batchPeaks, unrefined;
     while (next < gridPeaks.size() && static_cast<int>(batchPeaks.size()) < threads)
     {
       const Peak candidate{ gridPeaks[next].Euler, gridPeaks[next].Value, reflect };
@@ -406,16 +412,18 @@ std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
       batchPeaks.push_back(candidate);
       ++next;
     }
+    unrefined = batchPeaks;
     if (options.RefinePeaks)
     {
       ParallelFor(static_cast<int>(batchPeaks.size()), threads,
         [&](int i, int) { batchPeaks[i].Score = RefinePeak(tensor, batchPeaks[i].Euler); });
     }
-    for (const Peak& peak : batchPeaks)
+    for (std::size_t i = 0; i < batchPeaks.size(); ++i)
     {
-      if (static_cast<int>(accepted.size()) < wanted && separatedFromAccepted(peak))
+      if (static_cast<int>(accepted.size()) < wanted && separatedFromAccepted(unrefined[i]) &&
+        separatedFromAccepted(batchPeaks[i]))
       {
-        accepted.push_back(peak);
+        accepted.push_back(batchPeaks[i]);
       }
     }
   }

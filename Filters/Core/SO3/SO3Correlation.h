@@ -62,7 +62,7 @@ struct SO3CorrelationOptions
   /// C, its gradient and its Hessian (in Euler angles) alike. The default is at round-off;
   /// 0 uses every band both inputs have.
   double RefinementTolerance = 1e-15;
-  /// 0: one thread per core.
+  /// 0: automatic (ResolveThreadCount). The result is the same bit for bit for any count.
   int NumberOfThreads = 0;
   /// Called on the calling thread between the stages and between blocks of grid slices with
   /// the fraction done; returning false stops the search (the result is then Aborted, with

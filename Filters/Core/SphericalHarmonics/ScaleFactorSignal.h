@@ -25,7 +25,7 @@ struct ScaleFactorSignalParameters
   ScaleFactorValue Value = ScaleFactorValue::SquareRootAreaRatio;
   /// Heat-kernel time t of the low pass exp(-t l(l+1)); 0 disables smoothing.
   double SmoothingTime = 5e-4;
-  /// 0: hardware concurrency.
+  /// 0: automatic (ResolveThreadCount). The signal is the same bit for bit for any count.
   int NumberOfThreads = 0;
 };
 

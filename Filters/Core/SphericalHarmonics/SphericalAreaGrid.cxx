@@ -41,6 +41,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 namespace mobius
@@ -184,7 +185,32 @@ struct Accumulator
     , SouthMarker(size_t(n) * n, 0.0)
   {
   }
+
+  void Clear()
+  {
+    std::fill(this->Cells.begin(), this->Cells.end(), 0.0);
+    std::fill(this->NorthMarker.begin(), this->NorthMarker.end(), 0.0);
+    std::fill(this->SouthMarker.begin(), this->SouthMarker.end(), 0.0);
+  }
+
+  void Add(const Accumulator& other)
+  {
+    for (size_t k = 0; k < this->Cells.size(); ++k)
+    {
+      this->Cells[k] += other.Cells[k];
+      this->SouthMarker[k] += other.SouthMarker[k];
+    }
+    for (size_t k = 0; k < this->NorthMarker.size(); ++k)
+    {
+      this->NorthMarker[k] += other.NorthMarker[k];
+    }
+  }
 };
+
+// The triangles are rasterized in at most this many parts of at least this many triangles
+// (fewer make the parts' merging cost more than it saves).
+constexpr int MaximumRasterParts = 8;
+constexpr Eigen::Index TrianglesPerRasterPart = 4096;
 
 class TriangleRasterizer
 {
@@ -660,61 +686,90 @@ bool RasterizeSphericalAreas(const Points& spherePoints, const Triangles& triang
     v.Column = grid.Column(v.Phi);
   }
 
+  // The triangles are split into a fixed number of parts, whatever the thread count, each
+  // rasterized into its own accumulator from zero, and the parts are added up in part order:
+  // the grid is the same bit for bit on any number of threads. Threads take a wave of parts
+  // at a time, so at most one accumulator per thread (and the total) is alive.
   const Eigen::Index triangleCount = triangles.rows();
-  int threads = ResolveThreadCount(numberOfThreads);
-  threads = static_cast<int>(std::max<Eigen::Index>(1, std::min<Eigen::Index>(threads, triangleCount / 1024 + 1)));
+  const int parts = static_cast<int>(std::min<Eigen::Index>(
+    MaximumRasterParts, (triangleCount + TrianglesPerRasterPart - 1) / TrianglesPerRasterPart));
+  const int threads = std::max(1, std::min(ResolveThreadCount(numberOfThreads), parts));
   std::vector<Accumulator> accumulators;
   accumulators.reserve(threads);
   for (int t = 0; t < threads; ++t)
   {
     accumulators.emplace_back(n);
   }
+  std::unique_ptr<Accumulator> sum; // the parts of earlier waves, when there are several
   std::atomic<bool> aborted(false);
-  // One part of the triangles per thread, each into its own accumulator; ParallelFor carries
-  // an exception (std::bad_alloc) to this thread.
-  ParallelFor(threads, threads, [&](int part, int thread) {
-    TriangleRasterizer rasterizer(grid, accumulators[part]);
-    const Eigen::Index begin = triangleCount * part / threads;
-    const Eigen::Index end = triangleCount * (part + 1) / threads;
-    for (Eigen::Index t = begin; t < end; ++t)
-    {
-      if ((t - begin) % 4096 == 0)
+  for (int first = 0; first < std::max(parts, 1) && !aborted; first += threads)
+  {
+    const int wave = std::max(1, std::min(threads, parts - first));
+    // ParallelFor carries an exception (std::bad_alloc) to this thread.
+    ParallelFor(wave, wave, [&](int slot, int thread) {
+      const int part = first + slot;
+      Accumulator& accumulator = accumulators[slot];
+      if (first > 0)
       {
-        if (aborted)
-        {
-          return;
-        }
-        // Only the calling thread reports progress (VTK progress is not thread-safe).
-        if (thread == 0 && progress && !progress(0.9 * double(t - begin) / double(end - begin)))
-        {
-          aborted = true;
-          return;
-        }
+        accumulator.Clear();
       }
-      rasterizer.Add(vertices[triangles(t, 0)], vertices[triangles(t, 1)],
-        vertices[triangles(t, 2)], triangleAreas[t]);
+      TriangleRasterizer rasterizer(grid, accumulator);
+      const Eigen::Index begin = parts > 0 ? triangleCount * part / parts : 0;
+      const Eigen::Index end = parts > 0 ? triangleCount * (part + 1) / parts : 0;
+      for (Eigen::Index t = begin; t < end; ++t)
+      {
+        if ((t - begin) % 4096 == 0)
+        {
+          if (aborted)
+          {
+            return;
+          }
+          // Only the calling thread reports progress (VTK progress is not thread-safe).
+          if (thread == 0 && progress &&
+            !progress(0.9 * (part + double(t - begin) / double(end - begin)) / parts))
+          {
+            aborted = true;
+            return;
+          }
+        }
+        rasterizer.Add(vertices[triangles(t, 0)], vertices[triangles(t, 1)],
+          vertices[triangles(t, 2)], triangleAreas[t]);
+      }
+    });
+    if (aborted)
+    {
+      break;
     }
-  });
+    // Add this wave's parts in part order; 0 + x is exact, so the first part's accumulator
+    // can serve as the sum when it is the only wave.
+    int slot = 0;
+    if (!sum)
+    {
+      if (parts <= threads)
+      {
+        for (slot = 1; slot < wave; ++slot)
+        {
+          accumulators[0].Add(accumulators[slot]);
+        }
+        break;
+      }
+      sum.reset(new Accumulator(std::move(accumulators[0])));
+      accumulators[0] = Accumulator(n);
+      slot = 1;
+    }
+    for (; slot < wave; ++slot)
+    {
+      sum->Add(accumulators[slot]);
+    }
+  }
   if (aborted)
   {
     error = "aborted";
     return false;
   }
+  Accumulator& total = sum ? *sum : accumulators[0];
 
-  // Merge the threads, expand the pole markers, divide by the cell areas.
-  Accumulator& total = accumulators[0];
-  for (int t = 1; t < threads; ++t)
-  {
-    for (size_t k = 0; k < total.Cells.size(); ++k)
-    {
-      total.Cells[k] += accumulators[t].Cells[k];
-      total.SouthMarker[k] += accumulators[t].SouthMarker[k];
-    }
-    for (size_t k = 0; k < total.NorthMarker.size(); ++k)
-    {
-      total.NorthMarker[k] += accumulators[t].NorthMarker[k];
-    }
-  }
+  // Expand the pole markers, divide by the cell areas.
   std::vector<double> north(n, 0.0), south(n, 0.0);
   for (int j = n - 1; j >= 0; --j) // north[i] = sum_{k > j} NorthMarker[k][i]
   {

@@ -42,7 +42,8 @@ double SphericalGridCellArea(int resolution, int row);
 /// non-negative original-surface area per triangle. resolution N: even, >= 4.
 /// Triangles whose spherical image has (numerically) zero area put all their area into the
 /// cell of their centroid. Returns false with a message naming the problem for bad input, or
-/// when `progress` returns false (aborted). numberOfThreads = 0: hardware concurrency.
+/// when `progress` returns false (aborted). numberOfThreads = 0: automatic (ResolveThreadCount);
+/// the grid is the same bit for bit on any number of threads.
 bool RasterizeSphericalAreas(const Points& spherePoints, const Triangles& triangles,
   const Vector& triangleAreas, int resolution, ScaleFactorValue value,
   SphericalAreaGridResult& result, std::string& error, const ProgressCallback& progress = {},
