@@ -1,9 +1,11 @@
 """ParaView macro: the whole Moebius registration pipeline on two loaded meshes, shown as a
 correspondence view.
 
-Add it with Macros -> Import new macro... (the plugin must be loaded: Tools -> Manage
-Plugins, or PV_PLUGIN_PATH). Open two meshes, select the one to map from (the source), and
-click the macro. It builds
+The Debian package installs it in ParaView's Macros menu (a link in /usr/bin/Macros, where
+ParaView lists macros) with the plugin loaded at start-up. Otherwise add it with Macros ->
+Import new macro... (installed as <prefix>/share/mobius-registration/macros/; the plugin
+must be loaded: Tools -> Manage Plugins, or PV_PLUGIN_PATH). Open two meshes, select the
+one to map from (the source), and click the macro. It builds
     Spherical Conformal Map -> Mobius Center   (for each mesh)
     SO3 Register (Source, Target) -> Refine Correspondence (Source, Target)
 and opens a new layout tab "Mobius correspondence N" with linked render views side by side:
