@@ -131,11 +131,16 @@ item "paraview GUI: plugin at start-up, Macros menu -> MobiusRegistrationPipelin
 # What a user's run left (bytecode in the package's Python folder) must go too.
 nothing_left() {
   local left=0
+  # Every file and link the package had (its folders may be shared: /usr/bin...; the ones
+  # of its own are named after it, which the search below finds).
   while read -r path; do
-    if [ -e "$root$path" ] || [ -L "$root$path" ]; then
-      if [ ! -d "$root$path" ] || [ "$(ls -A "$root$path")" ]; then echo "left behind: $path"; left=1; fi
+    if [ -L "$root$path" ] || { [ -e "$root$path" ] && [ ! -d "$root$path" ]; }; then
+      echo "left behind: $path"; left=1
     fi
   done < "$root/tmp/mobius-check/files.txt"
+  for folder in /usr/bin/plugins /usr/bin/Macros; do  # only this package puts these there
+    if [ -e "$root$folder" ]; then echo "left behind: $folder"; left=1; fi
+  done
   in_chroot bash -c 'find / -xdev \( -iname "*mobius*" -o -iname "*MobiusRegistration*" \) -not -path "/tmp/*" -not -path "/var/cache/*" -not -path "/var/lib/dpkg/*" -not -path "/var/lib/apt/*" -not -path "/var/log/*" -not -path "/proc/*"' \
     > "$root/tmp/mobius-check/left.txt"
   if [ -s "$root/tmp/mobius-check/left.txt" ]; then echo "left behind:"; cat "$root/tmp/mobius-check/left.txt"; left=1; fi

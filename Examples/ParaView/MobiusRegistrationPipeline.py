@@ -20,11 +20,28 @@ The target is the other mesh without an input in the pipeline; if the selected m
 one of the two, the first loaded mesh is the source. It can be run again (on the same or
 other meshes): each run adds a pipeline and a layout.
 """
+import paraview.simple
 from paraview import servermanager
 from paraview.simple import (
     AddCameraLink, Calculator, ColorBy, CreateLayout, CreateView,
     GetActiveSource, GetActiveView, GetLayouts, GetSources, Hide,
     Render, SetActiveSource, SetActiveView, Show, Text, Transform)
+
+
+def plugin_filter(name):
+    """The plugin's filter `name` as paraview.simple makes it. The module gets a function
+    per proxy when the session starts and in LoadPlugin; ParaView's Macros menu runs the
+    macro in a namespace made before the plugin loaded at start-up, so the module itself is
+    asked, and refreshed if the plugin came after it."""
+    function = getattr(paraview.simple, name, None)
+    if function is None:
+        paraview.simple._add_functions(vars(paraview.simple))
+        function = getattr(paraview.simple, name, None)
+    if function is None:
+        raise RuntimeError(f"Mobius registration macro: the plugin's filter {name} is not loaded "
+                           "(Tools -> Manage Plugins -> MobiusRegistration)")
+    return function
+
 
 SHOW_SPHERES = True  # the third view, with the two centered spherical maps
 POSITION_COLORS = "PositionColor"  # the position as red-green-blue in [0, 1]
@@ -112,12 +129,12 @@ def build_pipeline():
 
     centered = []
     for mesh in (colored, target):
-        conformal = SphericalConformalMap(Input=mesh)  # noqa: F821 (from the plugin)
-        centered.append(MobiusCenter(Input=conformal))  # noqa: F821
-    aligned = SO3Register(Source=centered[0], Target=centered[1])  # noqa: F821
+        conformal = plugin_filter("SphericalConformalMap")(Input=mesh)
+        centered.append(plugin_filter("MobiusCenter")(Input=conformal))
+    aligned = plugin_filter("SO3Register")(Source=centered[0], Target=centered[1])
     # The Möbius map refined spectrally (from every candidate rotation): the accurate map.
     # Its output is the source's connectivity and point arrays at the mapped points.
-    correspondence = RefineCorrespondence(Source=aligned, Target=centered[1])  # noqa: F821
+    correspondence = plugin_filter("RefineCorrespondence")(Source=aligned, Target=centered[1])
 
     previous = GetActiveView()
     if previous is not None:

@@ -83,7 +83,7 @@ elf_files = [path for path in installed("**/*")
 check(len(elf_files) >= 5, f"too few installed binaries (programs, library, plugin, Python): {elf_files}")
 for path in elf_files:
     dynamic = run(["readelf", "-d", path]).stdout
-    needs_library = f"[{library_name}]" in dynamic
+    needs_library = any("(NEEDED)" in line and f"[{library_name}]" in line for line in dynamic.splitlines())
     runpaths = [entry for line in dynamic.splitlines() if "(RUNPATH)" in line or "(RPATH)" in line
                 for entry in line.split("[", 1)[1].rstrip("]").split(":") if entry]
     check(all(entry.startswith("$ORIGIN") for entry in runpaths),

@@ -21,7 +21,7 @@ def open_two_meshes(folder):
     turned.Transform.Rotate = [20.0, 40.0, 10.0]
     turned.Transform.Scale = [1.2, 1.0, 1.0]
     path = os.path.join(folder, "cow-turned.vtp")
-    SaveData(path, proxy=turned)
+    SaveData(path, proxy=turned, DataMode="Binary")
     Delete(turned)
     target = OpenDataFile(path)
     SetActiveSource(cow)
