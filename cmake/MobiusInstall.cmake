@@ -2,21 +2,27 @@
 # pages, the demo mesh, the CMake package configuration, the Python hooks, and the
 # ParaView plugin's autoload link.
 
-# Man pages, rendered from each program's --help at build time.
+# The installed programs find the module's library relative to themselves.
+set_property(TARGET mobius-register mobius-benchmark PROPERTY INSTALL_RPATH "${mobius_program_install_rpath}")
+
+# Man pages, rendered from each program's --help at build time and installed gzipped
+# (-n: no name or time stamp in the .gz, so that rebuilding gives the same bytes).
+find_program(MOBIUS_GZIP gzip REQUIRED)
 foreach (program IN ITEMS mobius-register mobius-benchmark)
   set(summary_mobius-register "dense correspondence between two genus-0 surface meshes")
   set(summary_mobius-benchmark "per-stage time, quality figures and memory of the registration pipeline")
   set(man_page "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_MANDIR}/man1/${program}.1")
   add_custom_command(
-    OUTPUT  "${man_page}"
+    OUTPUT  "${man_page}" "${man_page}.gz"
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_MANDIR}/man1"
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_LIST_DIR}/help_to_man.py"
             "$<TARGET_FILE:${program}>" "${program}" "${summary_${program}}" "${man_page}"
+    COMMAND "${MOBIUS_GZIP}" -9 -n -f -k "${man_page}"
     DEPENDS "${program}" "${CMAKE_CURRENT_LIST_DIR}/help_to_man.py"
     COMMENT "Man page of ${program} from its --help"
     VERBATIM)
-  add_custom_target("${program}-man" ALL DEPENDS "${man_page}")
-  install(FILES "${man_page}" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
+  add_custom_target("${program}-man" ALL DEPENDS "${man_page}.gz")
+  install(FILES "${man_page}.gz" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
 endforeach ()
 
 # The demo's mesh (CGAL's cow, CC0): `mobius-register` with no meshes runs on it.
@@ -54,16 +60,25 @@ if (NOT CMAKE_INSTALL_PREFIX STREQUAL "/usr")
 endif ()
 
 if (MOBIUS_PARAVIEW)
+  # The correspondence macro (plain paraview.simple Python), for Macros -> Import new macro...
+  set(mobius_macro_destination "${CMAKE_INSTALL_DATADIR}/mobius-registration/macros")
+  install(FILES "${PROJECT_SOURCE_DIR}/Examples/ParaView/MobiusRegistrationPipeline.py"
+    DESTINATION "${mobius_macro_destination}")
+
   # Debian's ParaView 5.11 loads, at start-up and without any environment variable, every
   # plugin in <directory of the executable>/plugins (vtkPVPluginLoader's search path:
   # PV_PLUGIN_PATH, then /usr/bin/plugins for /usr/bin/paraview, pvpython and pvbatch).
   # It reads no other plugin list: the paraview.plugins.xml in its plugin directory is
   # never loaded (no /usr/bin/paraview.conf). So the plugin stays in ParaView's plugin
   # directory and a relative link in bin/plugins makes ParaView load it.
-  # AUTO: the link for the /usr prefix (where Debian's ParaView is), decided again whenever
-  # the prefix changes.
+  # Its Macros menu likewise lists every file in <directory of the executable>/Macros
+  # (pqPythonMacroSupervisor: <app dir>/Macros, <app dir>/../Macros, the user's
+  # ~/.config/ParaView/Macros and PV_MACRO_PATH), so a link in bin/Macros puts the macro
+  # in the menu of every user.
+  # AUTO: the links for the /usr prefix (where Debian's ParaView is), decided again
+  # whenever the prefix changes.
   set(MOBIUS_PARAVIEW_AUTOLOAD "AUTO" CACHE STRING
-    "Install a link in <prefix>/bin/plugins so that a ParaView in the same prefix loads the plugin at start-up: AUTO (for /usr), ON or OFF")
+    "Install links in <prefix>/bin/plugins and <prefix>/bin/Macros so that a ParaView in the same prefix loads the plugin at start-up and lists the macro: AUTO (for /usr), ON or OFF")
   set_property(CACHE MOBIUS_PARAVIEW_AUTOLOAD PROPERTY STRINGS AUTO ON OFF)
   set(mobius_autoload "${MOBIUS_PARAVIEW_AUTOLOAD}")
   if (mobius_autoload STREQUAL "AUTO")
@@ -73,14 +88,23 @@ if (MOBIUS_PARAVIEW)
     endif ()
   endif ()
   if (mobius_autoload)
-    set(mobius_plugin_relative
+    # A relative symbolic link <prefix>/<link_dir>/<name> to <prefix>/<target>.
+    function (mobius_install_relative_link link_dir target)
+      get_filename_component(name "${target}" NAME)
+      file(RELATIVE_PATH relative "/prefix/${link_dir}" "/prefix/${target}")
+      set(link "${CMAKE_BINARY_DIR}/CMakeFiles/links/${link_dir}/${name}")
+      get_filename_component(link_parent "${link}" DIRECTORY)
+      file(MAKE_DIRECTORY "${link_parent}")
+      file(CREATE_LINK "${relative}" "${link}" SYMBOLIC)
+      install(FILES "${link}" DESTINATION "${link_dir}")
+    endfunction ()
+    mobius_install_relative_link("${CMAKE_INSTALL_BINDIR}/plugins"
       "${CMAKE_INSTALL_LIBDIR}/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so")
-    file(RELATIVE_PATH mobius_autoload_target "/prefix/${CMAKE_INSTALL_BINDIR}/plugins"
-      "/prefix/${mobius_plugin_relative}")
-    set(mobius_autoload_link "${CMAKE_BINARY_DIR}/CMakeFiles/autoload/MobiusRegistration.so")
-    file(MAKE_DIRECTORY "${CMAKE_BINARY_DIR}/CMakeFiles/autoload")
-    file(CREATE_LINK "${mobius_autoload_target}" "${mobius_autoload_link}" SYMBOLIC)
-    install(FILES "${mobius_autoload_link}" DESTINATION "${CMAKE_INSTALL_BINDIR}/plugins")
+    mobius_install_relative_link("${CMAKE_INSTALL_BINDIR}/Macros"
+      "${mobius_macro_destination}/MobiusRegistrationPipeline.py")
+    # Lintian flags folders in /usr/bin; these two are where ParaView looks (the file says why).
+    install(FILES "${CMAKE_CURRENT_LIST_DIR}/debian/lintian-overrides"
+      DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/lintian/overrides" RENAME mobius-registration)
   endif ()
 endif ()
 

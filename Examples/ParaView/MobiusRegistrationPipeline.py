@@ -1,9 +1,11 @@
 """ParaView macro: the whole Moebius registration pipeline on two loaded meshes, shown as a
 correspondence view.
 
-Add it with Macros -> Import new macro... (the plugin must be loaded: Tools -> Manage
-Plugins, or PV_PLUGIN_PATH). Open two meshes, select the one to map from (the source), and
-click the macro. It builds
+The Debian package installs it in ParaView's Macros menu (a link in /usr/bin/Macros, where
+ParaView lists macros) with the plugin loaded at start-up. Otherwise add it with Macros ->
+Import new macro... (installed as <prefix>/share/mobius-registration/macros/; the plugin
+must be loaded: Tools -> Manage Plugins, or PV_PLUGIN_PATH). Open two meshes, select the
+one to map from (the source), and click the macro. It builds
     Spherical Conformal Map -> Mobius Center   (for each mesh)
     SO3 Register (Source, Target) -> Refine Correspondence (Source, Target)
 and opens a new layout tab "Mobius correspondence N" with linked render views side by side:
@@ -18,11 +20,28 @@ The target is the other mesh without an input in the pipeline; if the selected m
 one of the two, the first loaded mesh is the source. It can be run again (on the same or
 other meshes): each run adds a pipeline and a layout.
 """
+import paraview.simple
 from paraview import servermanager
 from paraview.simple import (
     AddCameraLink, Calculator, ColorBy, CreateLayout, CreateView,
     GetActiveSource, GetActiveView, GetLayouts, GetSources, Hide,
     Render, SetActiveSource, SetActiveView, Show, Text, Transform)
+
+
+def plugin_filter(name):
+    """The plugin's filter `name` as paraview.simple makes it. The module gets a function
+    per proxy when the session starts and in LoadPlugin; ParaView's Macros menu runs the
+    macro in a namespace made before the plugin loaded at start-up, so the module itself is
+    asked, and refreshed if the plugin came after it."""
+    function = getattr(paraview.simple, name, None)
+    if function is None:
+        paraview.simple._add_functions(vars(paraview.simple))
+        function = getattr(paraview.simple, name, None)
+    if function is None:
+        raise RuntimeError(f"Mobius registration macro: the plugin's filter {name} is not loaded "
+                           "(Tools -> Manage Plugins -> MobiusRegistration)")
+    return function
+
 
 SHOW_SPHERES = True  # the third view, with the two centered spherical maps
 POSITION_COLORS = "PositionColor"  # the position as red-green-blue in [0, 1]
@@ -110,12 +129,12 @@ def build_pipeline():
 
     centered = []
     for mesh in (colored, target):
-        conformal = SphericalConformalMap(Input=mesh)  # noqa: F821 (from the plugin)
-        centered.append(MobiusCenter(Input=conformal))  # noqa: F821
-    aligned = SO3Register(Source=centered[0], Target=centered[1])  # noqa: F821
+        conformal = plugin_filter("SphericalConformalMap")(Input=mesh)
+        centered.append(plugin_filter("MobiusCenter")(Input=conformal))
+    aligned = plugin_filter("SO3Register")(Source=centered[0], Target=centered[1])
     # The Möbius map refined spectrally (from every candidate rotation): the accurate map.
     # Its output is the source's connectivity and point arrays at the mapped points.
-    correspondence = RefineCorrespondence(Source=aligned, Target=centered[1])  # noqa: F821
+    correspondence = plugin_filter("RefineCorrespondence")(Source=aligned, Target=centered[1])
 
     previous = GetActiveView()
     if previous is not None:

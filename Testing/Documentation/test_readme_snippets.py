@@ -1,14 +1,18 @@
 """Runs the README's code blocks as a user would, from a folder where `build` is the build
 tree: blocks tagged `sh` with bash, `python` with Debian's python3 (the package folder on
 PYTHONPATH, as the README says), `pvpython` with pvpython. Blocks tagged `shell` (the setup
-commands, which CI itself runs, and starting the GUI) and `c++` (a fragment) are not run."""
+commands, which CI itself runs, and starting the GUI) and `c++` (a fragment) are not run.
+
+The README's paths are those of the default build (`lib` for the libdir); a build for the
+/usr prefix (the .deb's) puts the plugin under lib/x86_64-linux-gnu, so the plugin paths
+are read in that build's libdir (the last argument)."""
 import os
 import re
 import shutil
 import subprocess
 import sys
 
-readme, build, pvpython, work = sys.argv[1:5]
+readme, build, pvpython, work, libdir = sys.argv[1:6]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 os.symlink(build, os.path.join(work, "build"))
@@ -27,7 +31,7 @@ for number, (language, code) in enumerate(blocks):
         continue
     script = os.path.join(work, f"snippet{number}.{language}")
     with open(script, "w") as f:
-        f.write(code)
+        f.write(code.replace("build/lib/paraview-5.11/", f"build/{libdir}/paraview-5.11/"))
     result = subprocess.run(runners[language] + [script], cwd=work, env=env, capture_output=True, text=True)
     ran += 1
     status = "ok" if result.returncode == 0 else f"FAILED ({result.returncode})"

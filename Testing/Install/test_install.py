@@ -4,6 +4,7 @@ python3 and pvpython, the ParaView plugin, and find_package(MobiusRegistration) 
 separate CMake project (Examples/Cxx) built and run against the staged tree."""
 import argparse
 import glob
+import gzip
 import os
 import shutil
 import subprocess
@@ -51,15 +52,48 @@ def installed(pattern):
 
 
 # What the install must hold.
-for pattern in ("bin/mobius-register", "bin/mobius-benchmark", "share/man/man1/mobius-register.1",
-                "share/man/man1/mobius-benchmark.1", "include/MobiusRegistration/vtkSO3Register.h",
+for pattern in ("bin/mobius-register", "bin/mobius-benchmark", "share/man/man1/mobius-register.1.gz",
+                "share/man/man1/mobius-benchmark.1.gz", "include/MobiusRegistration/vtkSO3Register.h",
                 "include/MobiusRegistration/vtkMobiusRegistrationFiltersModule.h",
                 "lib*/**/cmake/MobiusRegistration/MobiusRegistrationConfig.cmake",
                 "lib*/**/cmake/MobiusRegistration/MobiusRegistration-targets.cmake",
                 "lib/python3/dist-packages/mobiusregistration/__init__.py",
-                "share/mobius-registration/meshes/cow.off"):
+                "share/mobius-registration/meshes/cow.off",
+                "share/doc/mobius-registration/copyright", "share/doc/mobius-registration/changelog.gz"):
     check(installed(pattern), f"the install has no {pattern}")
 check(not installed("**/*Test*"), f"tests were installed: {installed('**/*Test*')[:5]}")
+
+# Every installed binary finds the project's library by a path relative to itself: its
+# RUNPATH holds only $ORIGIN-relative entries (no build folder, no absolute prefix), and
+# the dynamic linker, with no LD_LIBRARY_PATH, resolves the library to the staged copy.
+# A staging prefix is on no system path, so a wrong RPATH shows here as "not found" or as
+# the build tree's copy.
+library_name = "libvtkMobiusRegistrationFilters.so"
+staged_library = installed(f"lib*/**/{library_name}")
+check(len(staged_library) == 1, f"installed copies of {library_name}: {staged_library}")
+
+
+def is_elf(path):
+    with open(path, "rb") as f:
+        return f.read(4) == b"\x7fELF"
+
+
+elf_files = [path for path in installed("**/*")
+             if os.path.isfile(path) and not os.path.islink(path) and is_elf(path)]
+check(len(elf_files) >= 5, f"too few installed binaries (programs, library, plugin, Python): {elf_files}")
+for path in elf_files:
+    dynamic = run(["readelf", "-d", path]).stdout
+    needs_library = any("(NEEDED)" in line and f"[{library_name}]" in line for line in dynamic.splitlines())
+    runpaths = [entry for line in dynamic.splitlines() if "(RUNPATH)" in line or "(RPATH)" in line
+                for entry in line.split("[", 1)[1].rstrip("]").split(":") if entry]
+    check(all(entry.startswith("$ORIGIN") for entry in runpaths),
+          f"{path}: RUNPATH entries not relative to $ORIGIN: {runpaths}")
+    if needs_library and staged_library:
+        check(runpaths, f"{path} needs {library_name} but has no RUNPATH")
+        resolved = [line for line in run(["ldd", path]).stdout.splitlines() if library_name in line]
+        check(resolved and os.path.realpath(resolved[0].split("=>")[1].split("(")[0].strip())
+              == os.path.realpath(staged_library[0]),
+              f"{path}: {library_name} resolves to {resolved}, not to the staged {staged_library[0]}")
 
 # The programs: run from the staged bin, not the build.
 program = os.path.join(prefix, "bin", "mobius-register")
@@ -69,8 +103,8 @@ check(result.returncode == 0 and result.stdout.startswith("mobius-register "),
 result = run([os.path.join(prefix, "bin", "mobius-benchmark"), "--help"])
 check(result.returncode == 0 and "usage: mobius-benchmark" in result.stdout, "mobius-benchmark --help")
 for name, option in (("mobius-register", "resolution"), ("mobius-benchmark", "repeat")):
-    page = os.path.join(prefix, "share/man/man1", name + ".1")
-    text = open(page, encoding="utf-8").read() if os.path.exists(page) else ""
+    page = os.path.join(prefix, "share/man/man1", name + ".1.gz")
+    text = gzip.open(page, "rt", encoding="utf-8").read() if os.path.exists(page) else ""
     check(text.startswith(".TH ") and ".SH SYNOPSIS" in text and f"\\-\\-{option}" in text,
           f"{page} is not the program's --help as a man page")
 # The demo with no meshes given reads the installed cow (the build's copy is elsewhere);
@@ -95,10 +129,15 @@ for interpreter in interpreters:
 if args.pvpython:
     plugins = installed("lib*/**/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so")
     check(len(plugins) == 1, f"plugin files: {plugins}")
-    # The autoload link (installed for the /usr prefix) must lead to the installed plugin.
+    # The autoload links (installed for the /usr prefix) must lead to the installed plugin
+    # and macro.
     for link in installed("bin/plugins/*"):
         check(plugins and os.path.realpath(link) == os.path.realpath(plugins[0]),
               f"{link} does not lead to the installed plugin")
+    macro = os.path.join(prefix, "share/mobius-registration/macros/MobiusRegistrationPipeline.py")
+    check(os.path.isfile(macro), "the install has no ParaView macro")
+    for link in installed("bin/Macros/*"):
+        check(os.path.realpath(link) == os.path.realpath(macro), f"{link} does not lead to the installed macro")
     if plugins:
         script = (
             "import sys\n"
