@@ -134,8 +134,9 @@ public:
   ///@{
   /**
    * Sweeps of local repair of triangles left flipped on the sphere by the flow (each
-   * moves vertices of flipped triangles inside their neighbourhood); 0 disables it.
-   * Default 100.
+   * moves vertices of flipped triangles inside their neighbourhood; the sweep with the
+   * fewest folds is kept, and the vertices of folds left are then moved into the kernel of
+   * their star, which never adds a fold); 0 disables the repair. Default 100.
    */
   vtkSetClampMacro(FlipRepairPasses, int, 0, VTK_INT_MAX);
   vtkGetMacro(FlipRepairPasses, int);
