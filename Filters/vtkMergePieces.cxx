@@ -493,15 +493,15 @@ std::vector<std::pair<int, vtkIdType>> CellsOfType(const std::vector<Piece>& pie
         continue;
       }
       const long long id = ids ? static_cast<long long>(ids->GetTuple1(c)) : 0;
-      const auto first = ids ? pieceOfId.emplace(id, static_cast<int>(k))
-                             : std::make_pair(pieceOfId.end(), true);
-      if (!first.second)
+      const auto seen = ids ? pieceOfId.emplace(id, static_cast<int>(k))
+                            : std::make_pair(pieceOfId.end(), true);
+      // Another piece's cell of the same id is a copy of it (Redistribute DataSet copies
+      // the cut's cells, unmarked, when assigning them to all regions); MergePieces keeps
+      // one of two cells with the same points. Two cells of one piece with one id: the ids
+      // order nothing.
+      if (!seen.second && seen.first->second == static_cast<int>(k))
       {
-        if (first.first->second != static_cast<int>(k))
-        {
-          continue; // a copy of another piece's cell (the cut's cells, copied unmarked)
-        }
-        sortable = false; // one id for two cells of one piece: the ids order nothing
+        sortable = false;
       }
       cells.push_back({ static_cast<int>(k), c, id });
     }
