@@ -2,6 +2,7 @@
 
 #include "GeneralizedCentering.h"
 #include "MobiusCentering.h"
+#include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkDoubleArray.h"
@@ -21,16 +22,21 @@ vtkMobiusCenter::vtkMobiusCenter() = default;
 int vtkMobiusCenter::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // No exception may leave the pipeline (in ParaView it would end the application): running
-  // out of memory, or a failure in a worker thread, becomes this filter's error.
-  try
-  {
-    return this->ComputeOutput(request, inputVector, outputVector);
-  }
-  catch (...)
-  {
-    return mobius::vtk::ReportException(this, outputVector);
-  }
+  // The whole surface, also when ParaView splits it over ranks (the result then lives on
+  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
+  return mobius::vtk::RequestDataOnWholeInputs(
+    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
+      // No exception may leave the pipeline (in ParaView it would end the application): running
+      // out of memory, or a failure in a worker thread, becomes this filter's error.
+      try
+      {
+        return this->ComputeOutput(request, wholeInputs, outputVector);
+      }
+      catch (...)
+      {
+        return mobius::vtk::ReportException(this, outputVector);
+      }
+    });
 }
 
 //------------------------------------------------------------------------------

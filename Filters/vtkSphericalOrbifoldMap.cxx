@@ -1,6 +1,7 @@
 #include "vtkSphericalOrbifoldMap.h"
 
 #include "SphericalOrbifoldMap.h"
+#include "vtkDistributedInputs.h"
 #include "vtkSphericalConformalMap.h"
 #include "vtkSphericalMapData.h"
 
@@ -86,15 +87,20 @@ vtkSphericalOrbifoldMap::vtkSphericalOrbifoldMap() = default;
 int vtkSphericalOrbifoldMap::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // No exception may leave the pipeline (in ParaView it would end the application).
-  try
-  {
-    return this->ComputeOutput(request, inputVector, outputVector);
-  }
-  catch (...)
-  {
-    return mobius::vtk::ReportException(this, outputVector);
-  }
+  // The whole surface, also when ParaView splits it over ranks (the result then lives on
+  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
+  return mobius::vtk::RequestDataOnWholeInputs(
+    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
+      // No exception may leave the pipeline (in ParaView it would end the application).
+      try
+      {
+        return this->ComputeOutput(request, wholeInputs, outputVector);
+      }
+      catch (...)
+      {
+        return mobius::vtk::ReportException(this, outputVector);
+      }
+    });
 }
 
 //------------------------------------------------------------------------------

@@ -9,6 +9,7 @@
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
 #include "vtkSphericalConformalMap.h"
+#include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkCallbackCommand.h"
@@ -149,15 +150,20 @@ vtkSymmetryDetection::vtkSymmetryDetection() = default;
 int vtkSymmetryDetection::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // No exception may leave the pipeline (in ParaView it would end the application).
-  try
-  {
-    return this->ComputeOutput(request, inputVector, outputVector);
-  }
-  catch (...)
-  {
-    return mobius::vtk::ReportException(this, outputVector);
-  }
+  // The whole surface, also when ParaView splits it over ranks (the result then lives on
+  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
+  return mobius::vtk::RequestDataOnWholeInputs(
+    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
+      // No exception may leave the pipeline (in ParaView it would end the application).
+      try
+      {
+        return this->ComputeOutput(request, wholeInputs, outputVector);
+      }
+      catch (...)
+      {
+        return mobius::vtk::ReportException(this, outputVector);
+      }
+    });
 }
 
 //------------------------------------------------------------------------------

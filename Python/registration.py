@@ -117,6 +117,9 @@ def _field_values(polydata):
 
 
 def _centered_map(polydata, name, options, errors):
+    # The filters give an empty output for an empty input (VTK's convention), not an error.
+    if polydata.GetNumberOfPoints() == 0:
+        raise RegistrationError(f"{name}: the mesh has no points")
     conformal = errors.watch(vtkSphericalConformalMap())
     conformal.SetInputData(polydata)
     conformal.SetMaximumNumberOfIterations(int(options["iterations"]))

@@ -34,7 +34,7 @@ endif ()
 # properties file that vtk_module_build writes (in the build tree and the install tree).
 set(mobius_cmake_destination "${CMAKE_INSTALL_LIBDIR}/cmake/MobiusRegistration")
 set(mobius_vtk_link_components CommonCore CommonDataModel CommonExecutionModel CommonMath
-  FiltersCore IOGeometry IOLegacy IOPLY IOXML)
+  FiltersCore IOGeometry IOLegacy IOPLY IOXML ParallelCore)
 include(CMakePackageConfigHelpers)
 configure_file("${CMAKE_CURRENT_LIST_DIR}/MobiusRegistrationConfig.cmake.in"
   "${CMAKE_BINARY_DIR}/${mobius_cmake_destination}/MobiusRegistrationConfig.cmake" @ONLY)

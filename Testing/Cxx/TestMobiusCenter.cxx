@@ -225,8 +225,7 @@ int ExpectError(vtkPolyData* input, const std::string& words)
 int TestBadInputs()
 {
   int failures = 0;
-  vtkNew<vtkPolyData> empty;
-  failures += ExpectError(empty, "no points");
+  // An empty input gives an empty output, not an error: TestEmptyInputs.
 
   auto offSphere = mobius_test::MakeSphericalMap(2, mobius_test::BumpySurface);
   offSphere->GetPoints()->SetPoint(5, 0.0, 0.0, 1.1);

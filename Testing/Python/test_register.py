@@ -104,6 +104,12 @@ try:
 except RegistrationError as error:
     print("genus 2:", error)
     assert genus_two in str(error) and "genus" in str(error).lower(), error
+# The filters turn an empty mesh into an empty output (VTK's convention); register() says so.
+try:
+    register((np.zeros((0, 3)), np.zeros((0, 3), dtype=int)), hand, resolution=64, refine=False)
+    raise AssertionError("an empty mesh was registered")
+except RegistrationError as error:
+    assert "source" in str(error) and "no points" in str(error), error
 try:
     register(os.path.join(mesh_dir, "no-such-mesh.off"), hand)
     raise AssertionError("a missing file was registered")
