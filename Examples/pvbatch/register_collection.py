@@ -410,7 +410,33 @@ def cluster_order(distances):
     return next(iter(clusters.values())) if clusters else []
 
 
-def write_heat_map(distances, path, cell=24):
+def write_heat_map(distances, labels, path):
+    """The distance matrix as a picture, row 0 at the top: with matplotlib (Debian's
+    python3-matplotlib) labelled, with a colour bar; without it, plain pixels."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as pyplot
+    except ImportError:
+        write_heat_map_pixels(distances, path)
+        return
+    n = len(distances)
+    size = 2.0 + 0.32 * n
+    figure, axes = pyplot.subplots(figsize=(size + 1.2, size))
+    masked = numpy.ma.masked_invalid(numpy.array(distances, dtype=float))
+    colormap = matplotlib.colormaps["viridis"].copy()
+    colormap.set_bad("black")
+    shown = axes.imshow(masked, cmap=colormap, vmin=0.0, vmax=math.sqrt(0.5), interpolation="nearest")
+    axes.set_xticks(range(n), labels, rotation=90, fontsize=8)
+    axes.set_yticks(range(n), labels, fontsize=8)
+    axes.set_title("registration distance (black: not registered)", fontsize=9)
+    figure.colorbar(shown, ax=axes, fraction=0.046, pad=0.04, label="d = sqrt((1 - correlation) / 2)")
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    pyplot.close(figure)
+
+
+def write_heat_map_pixels(distances, path, cell=24):
     """Each matrix entry as a cell x cell block of pixels: dark blue 0 .. yellow 0.71
     (sqrt(1/2), unrelated signals); black where no pair was registered. Row 0 at the top."""
     n = len(distances)
@@ -481,7 +507,7 @@ if rank == 0:
         for row, k in enumerate(order):
             table.writerow([names[ok[k]]] + ["" if numpy.isnan(v) else f"{v:.6f}" for v in ordered[row]])
     if len(ok) > 0:
-        write_heat_map(ordered.tolist(), os.path.join(args.output, "distances.png"))
+        write_heat_map(ordered.tolist(), [names[ok[k]] for k in order], os.path.join(args.output, "distances.png"))
     seconds = time.perf_counter() - started
     summary = {
         "ranks": size, "threads_per_rank": threads_per_rank, "seconds": seconds, "mode": args.mode,
