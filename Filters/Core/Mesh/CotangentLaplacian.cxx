@@ -4,7 +4,9 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace mobius
@@ -33,6 +35,53 @@ Vector LumpedMass(const Points& points, const Triangles& triangles)
     }
   }
   return mass;
+}
+
+bool BuildMassMatrix(const Points& points, const Triangles& triangles, bool intrinsicDelaunay,
+  double consistentShare, SparseMatrix& mass)
+{
+  IntrinsicTriangulation intrinsic;
+  if (!MakeIntrinsicTriangulation(points, triangles, intrinsic))
+  {
+    return false;
+  }
+  if (intrinsicDelaunay)
+  {
+    FlipToDelaunay(intrinsic);
+  }
+  const Index n = points.rows();
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(9 * static_cast<size_t>(intrinsic.Corners.rows()));
+  // Per triangle of area A: lumped A/3 on the diagonal; consistent A/6 on the diagonal and
+  // A/12 off it. Blended: diagonal A (1/3 - s/6), off-diagonal s A / 12.
+  const double diagonal = 1.0 / 3.0 - consistentShare / 6.0, offDiagonal = consistentShare / 12.0;
+  for (Index t = 0; t < intrinsic.Corners.rows(); ++t)
+  {
+    const double a = intrinsic.Length[3 * t], b = intrinsic.Length[3 * t + 1],
+                 c = intrinsic.Length[3 * t + 2];
+    // Heron's formula in the numerically stable ordering (Kahan).
+    double s[3] = { a, b, c };
+    std::sort(s, s + 3, std::greater<double>());
+    const double product = (s[0] + (s[1] + s[2])) * (s[2] - (s[0] - s[1])) *
+      (s[2] + (s[0] - s[1])) * (s[0] + (s[1] - s[2]));
+    const double area = 0.25 * std::sqrt(std::max(0.0, product));
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index i = intrinsic.Corners(t, k);
+      entries.emplace_back(i, i, diagonal * area);
+      for (int l = 0; l < 3 && offDiagonal != 0; ++l) // lumped: a diagonal pattern
+      {
+        if (l != k)
+        {
+          entries.emplace_back(i, intrinsic.Corners(t, l), offDiagonal * area);
+        }
+      }
+    }
+  }
+  mass.resize(n, n);
+  mass.setFromTriplets(entries.begin(), entries.end());
+  mass.makeCompressed();
+  return true;
 }
 
 bool BuildCotangentStiffness(const Points& points, const Triangles& triangles,

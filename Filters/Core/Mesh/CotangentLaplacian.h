@@ -19,6 +19,17 @@ Vector TriangleAreas(const Points& points, const Triangles& triangles);
 /// Lumped (barycentric) mass: each vertex gets a third of the area of its triangles.
 Vector LumpedMass(const Points& points, const Triangles& triangles);
 
+/// The finite-element mass matrix of piecewise-linear functions, blended with the lumped one:
+/// consistentShare x consistent (M_ii = sum A_t / 6, M_ij = sum A_t / 12 over the triangles t
+/// around vertex i / edge ij) + (1 - consistentShare) x lumped (diagonal, A_t / 3). With
+/// `intrinsicDelaunay`, the triangles (and their areas, from edge lengths) are those of the
+/// intrinsic Delaunay triangulation, the one BuildCotangentStiffness uses, so that the mass
+/// and the stiffness discretize the same function space. Every diagonal entry is stored;
+/// off-diagonal ones only when consistentShare is not 0.
+/// False if the mesh has non-manifold or inconsistently oriented edges.
+bool BuildMassMatrix(const Points& points, const Triangles& triangles, bool intrinsicDelaunay,
+  double consistentShare, SparseMatrix& mass);
+
 struct CotangentStiffnessInfo
 {
   /// Edge flips made to reach the intrinsic Delaunay triangulation.

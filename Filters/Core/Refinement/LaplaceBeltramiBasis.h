@@ -3,6 +3,7 @@
 #ifndef mobius_LaplaceBeltramiBasis_h
 #define mobius_LaplaceBeltramiBasis_h
 
+#include "CotangentLaplacian.h"
 #include "MeshTypes.h"
 
 #include <string>
@@ -12,23 +13,29 @@ namespace mobius
 struct LaplaceBeltramiBasis
 {
   /// n x k, column j the j-th eigenfunction (ascending eigenvalue), orthonormal in the
-  /// lumped mass of the surface scaled to unit area: Functions^T diag(Mass) Functions = I.
+  /// mass matrix of the surface scaled to unit area: Functions^T Mass Functions = I.
   Eigen::MatrixXd Functions;
   /// The k eigenvalues, ascending, for the surface scaled to unit area (the first is ~0).
   Vector Eigenvalues;
-  /// Lumped mass of each vertex, the surface scaled to unit area (sums to 1).
-  Vector Mass;
+  /// The mass matrix of the eigenproblem, the surface scaled to unit area (its entries sum
+  /// to 1; diagonal when the consistent share is 0).
+  SparseMatrix Mass;
 };
 
 /// Computes the `count` eigenpairs of smallest eigenvalue of L phi = lambda M phi, with L the
 /// cotangent stiffness of the intrinsic Delaunay triangulation (well-defined weights on
-/// needle triangles) and M the lumped mass, by shift-invert Lanczos (Spectra) on a sparse
+/// needle triangles) and M the mass matrix: by default (`consistentMassShare` 0) the lumped
+/// mass of the original triangles; otherwise that share of the consistent mass blended with
+/// the lumped one, both on the intrinsic Delaunay triangulation (see BuildMassMatrix and the
+/// README's Accuracy section: 0.5 makes the eigenfunctions of a mesh and of a
+/// re-triangulation of it agree better, but made the refinement's candidate search land on
+/// mirror images, so it is not the default), by shift-invert Lanczos (Spectra) on a sparse
 /// Cholesky factorization, with single-precision Lanczos vectors and a double-precision
 /// Rayleigh-Ritz step (eigenfunctions mass-orthonormal to double precision; eigenvalues the
 /// Rayleigh quotients). Needs a closed, manifold, oriented mesh. Returns false with `error`
 /// set if the Laplacian cannot be built or the eigensolver does not converge.
 bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangles, int count,
-  LaplaceBeltramiBasis& basis, std::string& error);
+  LaplaceBeltramiBasis& basis, std::string& error, double consistentMassShare = 0.0);
 }
 
 #endif

@@ -256,7 +256,7 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
   {
     // C = Phi_S^T M_S Pi Phi_T: the mass-weighted projection, exact on all vertices.
     const RowMatrix mapped = GatherRows(targetEmbedding, result.NearestVertex, static_cast<int>(k));
-    c = sourceEmbedding.transpose() * source.Mass.asDiagonal() * mapped;
+    c = sourceEmbedding.transpose() * (source.Mass * mapped);
     transformedTarget = targetEmbedding * c.transpose();
     ForChunks(n, parameters.NumberOfThreads, [&](Index begin, Index end) {
       for (Index i = begin; i < end; ++i)
@@ -266,8 +266,8 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
       }
     });
   }
-  result.FunctionalMap = sourceEmbedding.transpose() * source.Mass.asDiagonal() *
-    GatherRows(targetEmbedding, result.NearestVertex, static_cast<int>(k));
+  result.FunctionalMap = sourceEmbedding.transpose() *
+    (source.Mass * GatherRows(targetEmbedding, result.NearestVertex, static_cast<int>(k)));
   result.OrthogonalityResidual = OrthogonalityResidual(result.FunctionalMap);
 
   result.Triangle.resize(static_cast<size_t>(n));

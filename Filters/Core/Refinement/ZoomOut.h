@@ -31,7 +31,7 @@ struct SpectralSurface
   Triangles Faces;
   RowMatrix Embedding;  ///< n x k eigenfunction values, one row per vertex
   Vector Eigenvalues;   ///< k, ascending, of the unit-area surface
-  Vector Mass;          ///< lumped mass of the unit-area surface
+  SparseMatrix Mass;    ///< mass matrix of the unit-area surface (Embedding is orthonormal in it)
   VertexLists Neighbors;
   VertexLists Corners;  ///< triangles around each vertex
   std::vector<Index> Samples;      ///< vertex indices, farthest-point order
