@@ -158,16 +158,7 @@ int vtkCorrespondenceRefinement::RequestData(
   // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
   return mobius::vtk::RequestDataOnWholeInputs(
     this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      // No exception may leave the pipeline (in ParaView it would end the application): running
-      // out of memory, or a failure in a worker thread, becomes this filter's error.
-      try
-      {
-        return this->ComputeOutput(request, wholeInputs, outputVector);
-      }
-      catch (...)
-      {
-        return mobius::vtk::ReportException(this, outputVector);
-      }
+      return this->ComputeOutput(request, wholeInputs, outputVector);
     });
 }
 

@@ -109,8 +109,20 @@ int ComputeUnlessEmpty(vtkAlgorithm* filter, std::vector<vtkInformationVector*> 
 
 //------------------------------------------------------------------------------
 int RequestDataOnWholeInputs(vtkAlgorithm* filter, vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector, const WholeInputsComputation& compute)
+  vtkInformationVector* outputVector, const WholeInputsComputation& filterComputation)
 {
+  // No exception may leave the pipeline (in ParaView it would end the application): running
+  // out of memory, or a failure in a worker thread, becomes the filter's error.
+  const WholeInputsComputation compute = [&](vtkInformationVector** wholeInputs) {
+    try
+    {
+      return filterComputation(wholeInputs);
+    }
+    catch (...)
+    {
+      return ReportException(filter, outputVector);
+    }
+  };
   const int ports = filter->GetNumberOfInputPorts();
   if (vtkDataObject* output = vtkDataObject::GetData(outputVector))
   {

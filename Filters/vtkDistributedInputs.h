@@ -33,8 +33,8 @@ namespace mobius
 namespace vtk
 {
 /// The filter's own work, given the whole inputs (an input vector per port, as
-/// RequestData's); returns RequestData's status. It must not throw: it catches and
-/// reports its exceptions (ReportException), as the filters do.
+/// RequestData's); returns RequestData's status. An exception it throws becomes the
+/// filter's error (ReportException) and a failure status.
 using WholeInputsComputation = std::function<int(vtkInformationVector** wholeInputs)>;
 
 /// RequestData for a filter whose algorithm needs the whole surface on every input port

@@ -154,15 +154,7 @@ int vtkSymmetryDetection::RequestData(
   // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
   return mobius::vtk::RequestDataOnWholeInputs(
     this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      // No exception may leave the pipeline (in ParaView it would end the application).
-      try
-      {
-        return this->ComputeOutput(request, wholeInputs, outputVector);
-      }
-      catch (...)
-      {
-        return mobius::vtk::ReportException(this, outputVector);
-      }
+      return this->ComputeOutput(request, wholeInputs, outputVector);
     });
 }
 
