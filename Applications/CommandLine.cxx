@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -19,7 +20,10 @@ bool ParseNumber(const std::string& text, double& value)
 bool ParseInteger(const std::string& text, int& value)
 {
   double number;
-  if (!ParseNumber(text, number) || number != static_cast<int>(number))
+  // Range first: converting NaN or a value outside int's range to int is undefined.
+  if (!ParseNumber(text, number) || !(number >= std::numeric_limits<int>::min() &&
+        number <= std::numeric_limits<int>::max()) ||
+    number != std::trunc(number))
   {
     return false;
   }
