@@ -7,6 +7,8 @@ Rendering needs an X display (Debian's VTK renders through GLX): run the scripts
 """
 import os
 
+import csv
+
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
@@ -49,6 +51,14 @@ def run_filter(algorithm, what):
     copy = vtkPolyData()
     copy.DeepCopy(output)
     return copy, messages.warnings
+
+
+def write_csv(rows, path):
+    """Rows (dicts with the same keys) as a CSV table with a header."""
+    with open(path, "w", newline="") as out:
+        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
 
 
 def read_mesh(path):

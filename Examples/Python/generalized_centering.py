@@ -26,7 +26,6 @@ and writes
                                   enlarged), all seen from the same direction.
 """
 import argparse
-import csv
 import os
 import sys
 
@@ -36,7 +35,7 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from mobiusregistration import vtkMobiusCenter, vtkSphericalConformalMap
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from example_pictures import (PanelPicture, diverging_lookup_table, field,  # noqa: E402
+from example_pictures import (write_csv, PanelPicture, diverging_lookup_table, field,  # noqa: E402
                               points_of, principal_frame, read_mesh, run_filter,
                               std_log_area_ratio, triangles_of)
 
@@ -123,10 +122,7 @@ def main():
     except RuntimeError as error:
         raise SystemExit(f"{args.mesh}: {error}")
     table = os.path.join(args.output, "generalized_centering.csv")
-    with open(table, "w", newline="") as out:
-        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv(rows, table)
     print("wrote", table)
     if not args.no_picture:
         picture = os.path.join(args.output, "generalized_centering.png")

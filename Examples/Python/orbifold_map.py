@@ -28,7 +28,6 @@ It writes
                          images of the cut separating the n copies.
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -41,7 +40,7 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData
 from mobiusregistration import vtkMobiusCenter, vtkSphericalConformalMap, vtkSphericalOrbifoldMap
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from example_pictures import (PanelPicture, field, points_of, principal_frame,  # noqa: E402
+from example_pictures import (write_csv, PanelPicture, field, points_of, principal_frame,  # noqa: E402
                               read_mesh, run_filter, std_log_area_ratio, triangles_of)
 
 
@@ -232,10 +231,7 @@ def main():
     except RuntimeError as error:
         raise SystemExit(f"{args.mesh}: {error}")
     table = os.path.join(args.output, "orbifold_map.csv")
-    with open(table, "w", newline="") as out:
-        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv(rows, table)
     print("wrote", table)
     if not args.no_picture:
         picture = os.path.join(args.output, "orbifold_map.png")

@@ -31,7 +31,6 @@ bent in the plane of its two largest axes. The symmetry distance depends only on
 registration, so the runs skip the refinement (`Refine` off); the picture's run refines.
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -39,43 +38,13 @@ import time
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
-from mobiusregistration import (vtkMobiusCenter, vtkSphericalConformalMap, vtkSurfaceMeshReader,
-                                vtkSymmetryDetection)
+from mobiusregistration import vtkMobiusCenter, vtkSphericalConformalMap, vtkSymmetryDetection
 
-
-class Messages:
-    """Collects a filter's errors and warnings instead of letting VTK print them."""
-
-    def __init__(self, *objects):
-        self.errors, self.warnings = [], []
-        for obj in objects:
-            obj.AddObserver(vtkCommand.ErrorEvent, self._error)
-            obj.AddObserver(vtkCommand.WarningEvent, self._warning)
-
-    # VTK passes the message as call data when the callback asks for a string.
-    def _error(self, obj, event, message=None):
-        self.errors.append(str(message).strip())
-
-    def _warning(self, obj, event, message=None):
-        self.warnings.append(str(message).strip())
-
-    _error.CallDataType = 13  # VTK_STRING
-    _warning.CallDataType = 13
-
-
-def read_mesh(path):
-    reader = vtkSurfaceMeshReader()
-    reader.SetFileName(path)
-    messages = Messages(reader, reader.GetExecutive())
-    reader.Update()
-    if messages.errors or reader.GetOutput().GetNumberOfPoints() == 0:
-        raise RuntimeError(messages.errors[0] if messages.errors else "no points")
-    mesh = vtkPolyData()
-    mesh.DeepCopy(reader.GetOutput())
-    return mesh
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from example_pictures import Messages, read_mesh, write_csv  # noqa: E402
 
 
 def points_of(mesh):
@@ -191,13 +160,6 @@ def sweep(paths, resolution, factor):
                              seconds="", error=message))
             print(f"{name:>10}: {message}", flush=True)
     return rows
-
-
-def write_csv(rows, path):
-    with open(path, "w", newline="") as out:
-        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
-        writer.writeheader()
-        writer.writerows(rows)
 
 
 def plot_distribution(rows, path):
