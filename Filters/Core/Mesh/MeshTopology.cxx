@@ -59,11 +59,60 @@ struct HalfEdge
   Index Triangle;
 };
 
-// All half-edges of the valid triangles, sorted so that the sides of an edge are adjacent.
+// Sorts `items` by (key(item), then less) where key is an integer in [0, keys): a counting
+// sort on the key, stable, then a stable sort of each key's run (insertion sort when short).
+// The runs here are a vertex's few edges or triangles, so this is linear where a comparison
+// sort of the whole array was the topology analysis' largest cost.
+template <typename Item, typename Key, typename Less>
+void SortByKeyThen(std::vector<Item>& items, Index keys, Key key, Less less)
+{
+  std::vector<Index> start(static_cast<size_t>(keys) + 1, 0);
+  for (const Item& item : items)
+  {
+    ++start[static_cast<size_t>(key(item)) + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<Item> sorted(items.size());
+  {
+    std::vector<Index> fill(start.begin(), start.end() - 1);
+    for (const Item& item : items)
+    {
+      sorted[static_cast<size_t>(fill[static_cast<size_t>(key(item))]++)] = item;
+    }
+  }
+  for (Index k = 0; k < keys; ++k)
+  {
+    const auto begin = sorted.begin() + start[k], end = sorted.begin() + start[k + 1];
+    if (end - begin > 32) // a hub vertex (a fan of thousands of triangles): no quadratic sort
+    {
+      std::stable_sort(begin, end, less);
+      continue;
+    }
+    if (begin == end)
+    {
+      continue;
+    }
+    for (auto i = begin + 1; i < end; ++i)
+    {
+      const Item item = *i;
+      auto j = i;
+      for (; j > begin && less(item, *(j - 1)); --j)
+      {
+        *j = *(j - 1);
+      }
+      *j = item;
+    }
+  }
+  items.swap(sorted);
+}
+
+// All half-edges of the valid triangles, sorted by (Low, High) so that the sides of an edge
+// are adjacent (in triangle order within an edge).
 std::vector<HalfEdge> SortedHalfEdges(const Triangles& triangles, const std::vector<char>& valid)
 {
   std::vector<HalfEdge> halfEdges;
   halfEdges.reserve(3 * valid.size());
+  Index keys = 0;
   for (Index t = 0; t < triangles.rows(); ++t)
   {
     if (!valid[t])
@@ -74,11 +123,12 @@ std::vector<HalfEdge> SortedHalfEdges(const Triangles& triangles, const std::vec
     {
       const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
       halfEdges.push_back({ std::min(from, to), std::max(from, to), from, t });
+      keys = std::max(keys, std::min(from, to) + 1);
     }
   }
-  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.Low != y.Low ? x.Low < y.Low : x.High < y.High;
-  });
+  SortByKeyThen(
+    halfEdges, keys, [](const HalfEdge& h) { return h.Low; },
+    [](const HalfEdge& x, const HalfEdge& y) { return x.High < y.High; });
   return halfEdges;
 }
 
@@ -304,7 +354,11 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
       corners.push_back(sorted);
     }
   }
-  std::sort(corners.begin(), corners.end());
+  SortByKeyThen(
+    corners, n, [](const std::array<Index, 3>& c) { return c[0]; },
+    [](const std::array<Index, 3>& x, const std::array<Index, 3>& y) {
+      return x[1] != y[1] ? x[1] < y[1] : x[2] < y[2];
+    });
   for (size_t i = 1; i < corners.size(); ++i)
   {
     report.DuplicateTriangles += corners[i] == corners[i - 1] ? 1 : 0;
@@ -351,77 +405,35 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   }
 
   // Vertex fans: the triangles around v, joined when they share an edge (v, w). A manifold
-  // vertex has one fan; two cones touching at their tips have two.
-  std::vector<Index> firstTriangle(static_cast<size_t>(n) + 1, 0);
+  // vertex has one fan; two cones touching at their tips have two. The triangles' corners
+  // (3 t + k) are the elements; every edge joins the corners of its triangles at each of its
+  // two ends, so each fan of v ends up as one set of v's corners.
+  UnionFind fans(3 * triangles.rows());
+  auto corner = [&](Index t, Index v) {
+    return 3 * t + (triangles(t, 0) == v ? 0 : triangles(t, 1) == v ? 1 : 2);
+  };
+  ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
+    const HalfEdge& first = halfEdges[begin];
+    for (size_t i = begin + 1; i < end; ++i)
+    {
+      fans.Union(corner(halfEdges[i].Triangle, first.Low), corner(first.Triangle, first.Low));
+      fans.Union(corner(halfEdges[i].Triangle, first.High), corner(first.Triangle, first.High));
+    }
+  });
+  std::vector<Index> fansAt(static_cast<size_t>(n), 0);
   for (Index t = 0; t < triangles.rows(); ++t)
   {
     if (valid[t])
     {
       for (int k = 0; k < 3; ++k)
       {
-        ++firstTriangle[triangles(t, k) + 1];
+        fansAt[triangles(t, k)] += fans.Find(3 * t + k) == 3 * t + k ? 1 : 0;
       }
     }
   }
-  std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
-  std::vector<Index> incident(static_cast<size_t>(firstTriangle[n]));
-  {
-    std::vector<Index> fill(firstTriangle.begin(), firstTriangle.end() - 1);
-    for (Index t = 0; t < triangles.rows(); ++t)
-    {
-      if (valid[t])
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          incident[fill[triangles(t, k)]++] = t;
-        }
-      }
-    }
-  }
-  std::vector<std::pair<Index, Index>> neighbours; // (other vertex, local triangle number)
-  std::vector<Index> fanParent;
   for (Index v = 0; v < n; ++v)
   {
-    const Index begin = firstTriangle[v], count = firstTriangle[v + 1] - begin;
-    if (count == 0)
-    {
-      continue;
-    }
-    neighbours.clear();
-    for (Index j = 0; j < count; ++j)
-    {
-      const Index t = incident[begin + j];
-      for (int k = 0; k < 3; ++k)
-      {
-        if (triangles(t, k) != v)
-        {
-          neighbours.emplace_back(triangles(t, k), j);
-        }
-      }
-    }
-    std::sort(neighbours.begin(), neighbours.end());
-    fanParent.resize(static_cast<size_t>(count));
-    std::iota(fanParent.begin(), fanParent.end(), Index(0));
-    auto find = [&](Index i) {
-      while (fanParent[i] != i)
-      {
-        i = fanParent[i] = fanParent[fanParent[i]];
-      }
-      return i;
-    };
-    for (size_t i = 1; i < neighbours.size(); ++i)
-    {
-      if (neighbours[i].first == neighbours[i - 1].first)
-      {
-        fanParent[find(neighbours[i].second)] = find(neighbours[i - 1].second);
-      }
-    }
-    Index fans = 0;
-    for (Index j = 0; j < count; ++j)
-    {
-      fans += find(j) == j ? 1 : 0;
-    }
-    report.NonManifoldVertices += fans > 1 ? 1 : 0;
+    report.NonManifoldVertices += fansAt[v] > 1 ? 1 : 0;
   }
 
   report.EulerCharacteristic = usedCount - report.Edges + validCount;
@@ -676,25 +688,27 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
   const std::vector<char> valid = ValidTriangles(triangles, numberOfPoints);
   const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
 
-  // Triangle adjacency across two-triangle edges, with whether the pair currently agrees.
+  // Triangle adjacency across two-triangle edges, with whether the pair currently agrees. On
+  // manifold edges a triangle has at most three neighbours: fixed slots, no list per triangle.
   struct Neighbour
   {
     Index Triangle;
     bool SameDirection; // both traverse the shared edge the same way: orientations disagree
   };
-  std::vector<std::vector<Neighbour>> adjacency(static_cast<size_t>(triangles.rows()));
+  std::vector<std::array<Neighbour, 3>> adjacency(static_cast<size_t>(triangles.rows()));
+  std::vector<unsigned char> neighbourCount(static_cast<size_t>(triangles.rows()), 0);
   bool manifold = true;
   ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
     if (end - begin > 2)
     {
       manifold = false;
     }
-    else if (end - begin == 2)
+    else if (end - begin == 2 && manifold)
     {
       const HalfEdge &x = halfEdges[begin], &y = halfEdges[begin + 1];
       const bool same = x.From == y.From;
-      adjacency[x.Triangle].push_back({ y.Triangle, same });
-      adjacency[y.Triangle].push_back({ x.Triangle, same });
+      adjacency[x.Triangle][neighbourCount[x.Triangle]++] = { y.Triangle, same };
+      adjacency[y.Triangle][neighbourCount[y.Triangle]++] = { x.Triangle, same };
     }
   });
   if (!manifold)
@@ -716,8 +730,9 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
     for (size_t q = 0; q < queue.size(); ++q)
     {
       const Index t = queue[q];
-      for (const Neighbour& nb : adjacency[t])
+      for (int i = 0; i < neighbourCount[t]; ++i)
       {
+        const Neighbour& nb = adjacency[t][i];
         const signed char wanted =
           static_cast<signed char>(nb.SameDirection ? 1 - reverse[t] : reverse[t]);
         if (reverse[nb.Triangle] < 0)
