@@ -1,5 +1,7 @@
 #include "MeshTopology.h"
 
+#include "StableSortRun.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -59,77 +61,53 @@ struct HalfEdge
   Index Triangle;
 };
 
-// Sorts `items` by (key(item), then less) where key is an integer in [0, keys): a counting
-// sort on the key, stable, then a stable sort of each key's run (insertion sort when short).
-// The runs here are a vertex's few edges or triangles, so this is linear where a comparison
-// sort of the whole array was the topology analysis' largest cost.
-template <typename Item, typename Key, typename Less>
-void SortByKeyThen(std::vector<Item>& items, Index keys, Key key, Less less)
+// The items that produce(emit) emits, sorted by (key(item), then less) where key is an
+// integer in [0, keys): produce runs twice, once to count each key's items and once to put
+// them in place (stable), then each key's run is sorted by less. The runs here are a
+// vertex's few edges or triangles, so this is linear where a comparison sort of the whole
+// array was the topology analysis' largest cost, and it writes the items once, straight to
+// their place.
+template <typename Item, typename Produce, typename Key, typename Less>
+std::vector<Item> BucketSorted(Index keys, Produce produce, Key key, Less less)
 {
   std::vector<Index> start(static_cast<size_t>(keys) + 1, 0);
-  for (const Item& item : items)
-  {
-    ++start[static_cast<size_t>(key(item)) + 1];
-  }
+  produce([&](const Item& item) { ++start[static_cast<size_t>(key(item)) + 1]; });
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<Item> sorted(items.size());
+  std::vector<Item> sorted(static_cast<size_t>(start.back()));
   {
     std::vector<Index> fill(start.begin(), start.end() - 1);
-    for (const Item& item : items)
-    {
+    produce([&](const Item& item) {
       sorted[static_cast<size_t>(fill[static_cast<size_t>(key(item))]++)] = item;
-    }
+    });
   }
   for (Index k = 0; k < keys; ++k)
   {
-    const auto begin = sorted.begin() + start[k], end = sorted.begin() + start[k + 1];
-    if (end - begin > 32) // a hub vertex (a fan of thousands of triangles): no quadratic sort
-    {
-      std::stable_sort(begin, end, less);
-      continue;
-    }
-    if (begin == end)
-    {
-      continue;
-    }
-    for (auto i = begin + 1; i < end; ++i)
-    {
-      const Item item = *i;
-      auto j = i;
-      for (; j > begin && less(item, *(j - 1)); --j)
-      {
-        *j = *(j - 1);
-      }
-      *j = item;
-    }
+    StableSortRun(sorted.begin() + start[k], sorted.begin() + start[k + 1], less);
   }
-  items.swap(sorted);
+  return sorted;
 }
 
-// All half-edges of the valid triangles, sorted by (Low, High) so that the sides of an edge
-// are adjacent (in triangle order within an edge).
-std::vector<HalfEdge> SortedHalfEdges(const Triangles& triangles, const std::vector<char>& valid)
+// All half-edges of the valid triangles (whose points are below numberOfPoints), sorted by
+// (Low, High) so that the sides of an edge are adjacent (in triangle order within an edge).
+std::vector<HalfEdge> SortedHalfEdges(
+  const Triangles& triangles, const std::vector<char>& valid, Index numberOfPoints)
 {
-  std::vector<HalfEdge> halfEdges;
-  halfEdges.reserve(3 * valid.size());
-  Index keys = 0;
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    if (!valid[t])
+  auto produce = [&](auto emit) {
+    for (Index t = 0; t < triangles.rows(); ++t)
     {
-      continue;
+      if (valid[t])
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
+          emit(HalfEdge{ std::min(from, to), std::max(from, to), from, t });
+        }
+      }
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
-      halfEdges.push_back({ std::min(from, to), std::max(from, to), from, t });
-      keys = std::max(keys, std::min(from, to) + 1);
-    }
-  }
-  SortByKeyThen(
-    halfEdges, keys, [](const HalfEdge& h) { return h.Low; },
+  };
+  return BucketSorted<HalfEdge>(
+    numberOfPoints, produce, [](const HalfEdge& h) { return h.Low; },
     [](const HalfEdge& x, const HalfEdge& y) { return x.High < y.High; });
-  return halfEdges;
 }
 
 // Calls visit(begin, end) for each group of half-edges sharing an edge.
@@ -343,22 +321,21 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   // A face listed twice (either way round) makes its edges non-manifold, and a single
   // triangle closed by FillHoles becomes two triangles on the same points (a "pillow" with
   // no inside): named as what they are rather than only through their edges.
-  std::vector<std::array<Index, 3>> corners;
-  corners.reserve(static_cast<size_t>(validCount));
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    if (valid[t])
+  using Corners = std::array<Index, 3>;
+  auto produceCorners = [&](auto emit) {
+    for (Index t = 0; t < triangles.rows(); ++t)
     {
-      std::array<Index, 3> sorted = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
-      std::sort(sorted.begin(), sorted.end());
-      corners.push_back(sorted);
+      if (valid[t])
+      {
+        Corners sorted = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+        std::sort(sorted.begin(), sorted.end());
+        emit(sorted);
+      }
     }
-  }
-  SortByKeyThen(
-    corners, n, [](const std::array<Index, 3>& c) { return c[0]; },
-    [](const std::array<Index, 3>& x, const std::array<Index, 3>& y) {
-      return x[1] != y[1] ? x[1] < y[1] : x[2] < y[2];
-    });
+  };
+  const std::vector<Corners> corners = BucketSorted<Corners>(
+    n, produceCorners, [](const Corners& c) { return c[0]; },
+    [](const Corners& x, const Corners& y) { return x[1] != y[1] ? x[1] < y[1] : x[2] < y[2]; });
   for (size_t i = 1; i < corners.size(); ++i)
   {
     report.DuplicateTriangles += corners[i] == corners[i - 1] ? 1 : 0;
@@ -366,7 +343,7 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   const Index usedCount = std::count(used.begin(), used.end(), 1);
   report.UnusedPoints = n - usedCount;
 
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, n);
   ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
     ++report.Edges;
     const size_t sides = end - begin;
@@ -607,7 +584,7 @@ MeshProvenance ExtractLargestComponent(Points& points, Triangles& triangles)
 Index FillHoles(Points& points, Triangles& triangles, MeshProvenance* provenance)
 {
   const std::vector<char> valid = ValidTriangles(triangles, points.rows());
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, points.rows());
   std::vector<std::vector<Index>> loops;
   std::vector<char> closed;
   TraceBoundaryLoops(halfEdges, loops, closed);
@@ -686,7 +663,7 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
     numberOfPoints = std::max(numberOfPoints, triangles.row(t).maxCoeff() + 1);
   }
   const std::vector<char> valid = ValidTriangles(triangles, numberOfPoints);
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, numberOfPoints);
 
   // Triangle adjacency across two-triangle edges, with whether the pair currently agrees. On
   // manifold edges a triangle has at most three neighbours: fixed slots, no list per triangle.
