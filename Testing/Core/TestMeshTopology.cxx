@@ -334,6 +334,20 @@ void TestHubVertex()
   Index reversed = 0;
   MOBIUS_CHECK(OrientConsistently(one, &reversed) && reversed > 0);
   MOBIUS_CHECK(AnalyzeMeshTopology(onePoints, one).IsTopologicalSphere());
+  // Point numbers far beyond the mesh's size (OrientConsistently sees no point count):
+  // sorted without a bucket per number, to the same result.
+  Triangles dense = one;
+  for (Index f = 0; f < 2 * sides; f += 4)
+  {
+    std::swap(dense(f, 1), dense(f, 2));
+  }
+  const Index offset = Index(1) << 40;
+  Triangles sparse = dense;
+  sparse.array() += offset;
+  MOBIUS_CHECK(OrientConsistently(dense) && OrientConsistently(sparse, &reversed));
+  MOBIUS_CHECK(reversed == 2 * sides - (2 * sides + 3) / 4);
+  MOBIUS_CHECK(((sparse.array() - offset).matrix() - dense).cwiseAbs().maxCoeff() == 0);
+  MOBIUS_CHECK(AnalyzeMeshTopology(onePoints, dense).IsTopologicalSphere());
   // The same mesh listed twice in a row: every triangle a duplicate.
   Triangles twice(2 * one.rows(), 3);
   twice << one, one;

@@ -105,6 +105,18 @@ std::vector<HalfEdge> SortedHalfEdges(
       }
     }
   };
+  if (numberOfPoints > 4 * 3 * triangles.rows() + 1024)
+  {
+    // Indices far beyond the mesh's size (OrientConsistently takes the largest index as
+    // the point count): a bucket per index would cost more than a comparison sort. Same
+    // order: stable, by (Low, High).
+    std::vector<HalfEdge> halfEdges;
+    produce([&](const HalfEdge& h) { halfEdges.push_back(h); });
+    std::stable_sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+      return x.Low != y.Low ? x.Low < y.Low : x.High < y.High;
+    });
+    return halfEdges;
+  }
   return BucketSorted<HalfEdge>(
     numberOfPoints, produce, [](const HalfEdge& h) { return h.Low; },
     [](const HalfEdge& x, const HalfEdge& y) { return x.High < y.High; });
