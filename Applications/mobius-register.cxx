@@ -4,7 +4,6 @@
 #include "DemoMeshes.h"
 #include "JsonSummary.h"
 #include "MemoryReuse.h"
-#include "ParallelFor.h"
 #include "OutputFiles.h"
 #include "RegistrationPipeline.h"
 #include "VTKMessages.h"
@@ -75,29 +74,6 @@ bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::
     return false;
   }
   mesh = reader->GetOutput();
-  return true;
-}
-
-// Reads the source and the target side by side when there are threads for it: parsing and
-// checking the files precedes every other stage. If both fail, the source's error is the
-// one reported, as when they were read in turn.
-bool ReadMeshes(const std::string& sourcePath, const std::string& targetPath, int threads,
-  vtkSmartPointer<vtkPolyData>& source, vtkSmartPointer<vtkPolyData>& target, std::string& error)
-{
-  const std::string* paths[2] = { &sourcePath, &targetPath };
-  vtkSmartPointer<vtkPolyData>* meshes[2] = { &source, &target };
-  std::string errors[2];
-  bool read[2] = { false, false };
-  mobius::ParallelFor(
-    2, threads, [&](int k, int) { read[k] = ReadMesh(*paths[k], *meshes[k], errors[k]); });
-  for (int k = 0; k < 2; ++k)
-  {
-    if (!read[k])
-    {
-      error = errors[k];
-      return false;
-    }
-  }
   return true;
 }
 
@@ -332,8 +308,7 @@ int Run(int argc, char* argv[])
     return Fail(error);
   }
   if (!commandLine.Demo &&
-    !ReadMeshes(commandLine.Source, commandLine.Target,
-      mobius::ResolveThreadCount(commandLine.Pipeline.NumberOfThreads), source, target, error))
+    (!ReadMesh(commandLine.Source, source, error) || !ReadMesh(commandLine.Target, target, error)))
   {
     return Fail(error);
   }
