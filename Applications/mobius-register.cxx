@@ -3,6 +3,7 @@
 #include "CommandLine.h"
 #include "DemoMeshes.h"
 #include "JsonSummary.h"
+#include "MemoryReuse.h"
 #include "OutputFiles.h"
 #include "RegistrationPipeline.h"
 #include "VTKMessages.h"
@@ -232,6 +233,7 @@ int main(int argc, char* argv[])
   // VTK's messages become ours: warnings (unless --quiet), or nothing when the program fails
   // with its own one-line reason.
   CaptureVTKMessages();
+  KeepFreedMemoryForReuse();
   try
   {
     return Run(argc, argv);

@@ -260,17 +260,38 @@ int vtkSphericalConformalMap::ComputeOutput(
   {
     provenance.Apply(mobius::ExtractLargestComponent(points, triangles));
   }
+  // The report is recomputed only after a repair changed the mesh: on a clean mesh (the
+  // usual case) it is still the first one, and the analysis is a large share of the filter's
+  // time outside the flow.
+  bool changed = duplicates > 0 || (this->KeepLargestComponent && report.ConnectedComponents > 1);
+  const mobius::Index pointsBefore = points.rows();
   provenance.Apply(RemoveUnusedPoints(points, triangles));
-  report = mobius::AnalyzeMeshTopology(points, triangles);
+  changed = changed || points.rows() != pointsBefore;
+  if (changed)
+  {
+    report = mobius::AnalyzeMeshTopology(points, triangles);
+  }
   mobius::Index filledHoles = 0;
   if (this->FillHoles && report.BoundaryLoops > 0)
   {
     mobius::MeshProvenance filled;
     filledHoles = mobius::FillHoles(points, triangles, &filled);
     provenance.Apply(filled);
+    changed = true;
   }
-  const bool oriented = mobius::OrientConsistently(triangles);
-  report = mobius::AnalyzeMeshTopology(points, triangles);
+  // With every two-sided edge agreeing (and the report current), re-orienting would flip
+  // no triangle: each breadth-first choice keeps its neighbour's orientation.
+  bool oriented = true;
+  if (changed || report.InconsistentlyOrientedEdges > 0)
+  {
+    mobius::Index reversed = 0;
+    oriented = mobius::OrientConsistently(triangles, &reversed);
+    changed = changed || reversed > 0;
+  }
+  if (changed)
+  {
+    report = mobius::AnalyzeMeshTopology(points, triangles);
+  }
   if (!report.IsTopologicalSphere())
   {
     std::ostringstream message;

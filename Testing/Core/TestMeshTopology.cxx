@@ -281,6 +281,80 @@ void TestDuplicateTriangles()
   MOBIUS_CHECK(!pillow.IsTopologicalSphere());
 }
 
+// A vertex of high degree (its edges and triangles are sorted in long runs, not the few of
+// an ordinary vertex): two cones of 50 triangles sharing their apex, each closed by a cap
+// around its own centre. Manifold edges, one non-manifold vertex; one cone alone is a sphere.
+void TestHubVertex()
+{
+  const int sides = 50;
+  Points p(1 + 2 * (sides + 1), 3);
+  std::vector<Eigen::Matrix<Index, 1, 3>> faces;
+  p.row(0) << 0, 0, 0;
+  for (int cone = 0; cone < 2; ++cone)
+  {
+    const Index rim = 1 + cone * (sides + 1), cap = rim + sides;
+    const double z = cone == 0 ? 1.0 : -1.0;
+    for (int i = 0; i < sides; ++i)
+    {
+      const double angle = 2.0 * M_PI * i / sides;
+      p.row(rim + i) << std::cos(angle), std::sin(angle), z;
+    }
+    p.row(cap) << 0, 0, 2 * z;
+    for (Index i = 0; i < sides; ++i)
+    {
+      const Index a = rim + i, b = rim + (i + 1) % sides;
+      faces.push_back(cone == 0 ? Eigen::Matrix<Index, 1, 3>(0, b, a) : Eigen::Matrix<Index, 1, 3>(0, a, b));
+      faces.push_back(cone == 0 ? Eigen::Matrix<Index, 1, 3>(cap, a, b) : Eigen::Matrix<Index, 1, 3>(cap, b, a));
+    }
+  }
+  Triangles both(static_cast<Index>(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f)
+  {
+    both.row(static_cast<Index>(f)) = faces[f];
+  }
+  MeshTopologyReport r = AnalyzeMeshTopology(p, both);
+  MOBIUS_CHECK(r.Edges == 2 * 3 * sides);
+  MOBIUS_CHECK(r.BoundaryEdges == 0 && r.NonManifoldEdges == 0);
+  MOBIUS_CHECK(r.InconsistentlyOrientedEdges == 0);
+  MOBIUS_CHECK(r.NonManifoldVertices == 1);
+  MOBIUS_CHECK(r.DuplicateTriangles == 0 && r.ConnectedComponents == 1);
+
+  Triangles one = both.topRows(2 * sides);
+  Points onePoints = p.topRows(sides + 2);
+  r = AnalyzeMeshTopology(onePoints, one);
+  MOBIUS_CHECK(r.IsTopologicalSphere() && r.Edges == 3 * sides);
+  // Reversing every other apex triangle leaves 2 * sides disagreeing edges; re-orienting
+  // must restore all of them.
+  for (Index f = 0; f < 2 * sides; f += 4)
+  {
+    std::swap(one(f, 1), one(f, 2));
+  }
+  r = AnalyzeMeshTopology(onePoints, one);
+  MOBIUS_CHECK(r.InconsistentlyOrientedEdges > 0);
+  Index reversed = 0;
+  MOBIUS_CHECK(OrientConsistently(one, &reversed) && reversed > 0);
+  MOBIUS_CHECK(AnalyzeMeshTopology(onePoints, one).IsTopologicalSphere());
+  // Point numbers far beyond the mesh's size (OrientConsistently sees no point count):
+  // sorted without a bucket per number, to the same result.
+  Triangles dense = one;
+  for (Index f = 0; f < 2 * sides; f += 4)
+  {
+    std::swap(dense(f, 1), dense(f, 2));
+  }
+  const Index offset = Index(1) << 40;
+  Triangles sparse = dense;
+  sparse.array() += offset;
+  MOBIUS_CHECK(OrientConsistently(dense) && OrientConsistently(sparse, &reversed));
+  MOBIUS_CHECK(reversed == 2 * sides - (2 * sides + 3) / 4);
+  MOBIUS_CHECK(((sparse.array() - offset).matrix() - dense).cwiseAbs().maxCoeff() == 0);
+  MOBIUS_CHECK(AnalyzeMeshTopology(onePoints, dense).IsTopologicalSphere());
+  // The same mesh listed twice in a row: every triangle a duplicate.
+  Triangles twice(2 * one.rows(), 3);
+  twice << one, one;
+  r = AnalyzeMeshTopology(onePoints, twice);
+  MOBIUS_CHECK(r.DuplicateTriangles == one.rows() && r.NonManifoldEdges == 3 * sides);
+}
+
 int main()
 {
   TestSphereAndTorus();
@@ -290,5 +364,6 @@ int main()
   TestComponentsAndOrientation();
   TestBadValues();
   TestDuplicateTriangles();
+  TestHubVertex();
   return MOBIUS_TEST_RESULT();
 }

@@ -1,8 +1,12 @@
 #include "IntrinsicDelaunay.h"
 
+#include "StableSortRun.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <vector>
 
 namespace mobius
 {
@@ -145,49 +149,52 @@ bool MakeIntrinsicTriangulation(
   intrinsic.Corners = triangles;
   intrinsic.Length.assign(static_cast<size_t>(3 * m), 0.0);
   intrinsic.Twin.assign(static_cast<size_t>(3 * m), -1);
-  // Pair half-edges by sorting (low, high, half-edge) records.
-  struct Record
+  // Pair half-edges through each vertex's outgoing ones, sorted by where they go (a
+  // counting sort by start vertex, then a sort of each vertex's few): the twin of a -> b is
+  // the one b -> a. An edge must have at most two sides, in opposite directions.
+  const Index numberOfPoints = points.rows();
+  if (m > 0 && (triangles.minCoeff() < 0 || triangles.maxCoeff() >= numberOfPoints))
   {
-    Index Low, High, HalfEdge;
-  };
-  std::vector<Record> records;
-  records.reserve(static_cast<size_t>(3 * m));
-  for (Index t = 0; t < m; ++t)
+    return false;
+  }
+  auto from = [&](Index h) { return triangles(h / 3, h % 3); };
+  auto to = [&](Index h) { return triangles(h / 3, (h % 3 + 1) % 3); };
+  std::vector<Index> start(static_cast<size_t>(numberOfPoints) + 1, 0);
+  for (Index h = 0; h < 3 * m; ++h)
   {
-    for (int k = 0; k < 3; ++k)
+    ++start[from(h) + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<Index> outgoing(static_cast<size_t>(3 * m));
+  {
+    std::vector<Index> fill(start.begin(), start.end() - 1);
+    for (Index h = 0; h < 3 * m; ++h)
     {
-      const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
-      intrinsic.Length[3 * t + k] = (points.row(from) - points.row(to)).norm();
-      records.push_back({ std::min(from, to), std::max(from, to), 3 * t + k });
+      outgoing[fill[from(h)]++] = h;
     }
   }
-  std::sort(records.begin(), records.end(), [](const Record& x, const Record& y) {
-    return x.Low != y.Low ? x.Low < y.Low : x.High < y.High;
-  });
-  for (size_t i = 0; i < records.size();)
+  auto byEnd = [&](Index x, Index y) { return to(x) < to(y); };
+  for (Index v = 0; v < numberOfPoints; ++v)
   {
-    size_t j = i + 1;
-    while (j < records.size() && records[j].Low == records[i].Low &&
-      records[j].High == records[i].High)
+    const auto begin = outgoing.begin() + start[v], end = outgoing.begin() + start[v + 1];
+    StableSortRun(begin, end, byEnd);
+    if (std::adjacent_find(begin, end, [&](Index x, Index y) { return to(x) == to(y); }) != end)
     {
-      ++j;
+      return false; // two sides in the same direction: inconsistent or non-manifold
     }
-    if (j - i > 2)
+  }
+  for (Index h = 0; h < 3 * m; ++h)
+  {
+    const Index a = from(h), b = to(h);
+    intrinsic.Length[h] = (points.row(a) - points.row(b)).norm();
+    // b's outgoing half-edges have distinct ends, so at most one goes back to a.
+    const auto begin = outgoing.begin() + start[b], end = outgoing.begin() + start[b + 1];
+    const auto twin = std::lower_bound(
+      begin, end, a, [&](Index x, Index target) { return to(x) < target; });
+    if (twin != end && to(*twin) == a && *twin != h)
     {
-      return false;
+      intrinsic.Twin[h] = *twin;
     }
-    if (j - i == 2)
-    {
-      const Index x = records[i].HalfEdge, y = records[i + 1].HalfEdge;
-      // Opposite directions, or the orientation is inconsistent.
-      if (triangles(x / 3, x % 3) == triangles(y / 3, y % 3))
-      {
-        return false;
-      }
-      intrinsic.Twin[x] = y;
-      intrinsic.Twin[y] = x;
-    }
-    i = j;
   }
   return true;
 }

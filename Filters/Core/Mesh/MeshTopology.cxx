@@ -1,5 +1,7 @@
 #include "MeshTopology.h"
 
+#include "StableSortRun.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -59,27 +61,65 @@ struct HalfEdge
   Index Triangle;
 };
 
-// All half-edges of the valid triangles, sorted so that the sides of an edge are adjacent.
-std::vector<HalfEdge> SortedHalfEdges(const Triangles& triangles, const std::vector<char>& valid)
+// The items that produce(emit) emits, sorted by (key(item), then less) where key is an
+// integer in [0, keys): produce runs twice, once to count each key's items and once to put
+// them in place (stable), then each key's run is sorted by less. The runs here are a
+// vertex's few edges or triangles, so this is linear where a comparison sort of the whole
+// array was the topology analysis' largest cost, and it writes the items once, straight to
+// their place.
+template <typename Item, typename Produce, typename Key, typename Less>
+std::vector<Item> BucketSorted(Index keys, Produce produce, Key key, Less less)
 {
-  std::vector<HalfEdge> halfEdges;
-  halfEdges.reserve(3 * valid.size());
-  for (Index t = 0; t < triangles.rows(); ++t)
+  std::vector<Index> start(static_cast<size_t>(keys) + 1, 0);
+  produce([&](const Item& item) { ++start[static_cast<size_t>(key(item)) + 1]; });
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<Item> sorted(static_cast<size_t>(start.back()));
   {
-    if (!valid[t])
-    {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
-      halfEdges.push_back({ std::min(from, to), std::max(from, to), from, t });
-    }
+    std::vector<Index> fill(start.begin(), start.end() - 1);
+    produce([&](const Item& item) {
+      sorted[static_cast<size_t>(fill[static_cast<size_t>(key(item))]++)] = item;
+    });
   }
-  std::sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.Low != y.Low ? x.Low < y.Low : x.High < y.High;
-  });
-  return halfEdges;
+  for (Index k = 0; k < keys; ++k)
+  {
+    StableSortRun(sorted.begin() + start[k], sorted.begin() + start[k + 1], less);
+  }
+  return sorted;
+}
+
+// All half-edges of the valid triangles (whose points are below numberOfPoints), sorted by
+// (Low, High) so that the sides of an edge are adjacent (in triangle order within an edge).
+std::vector<HalfEdge> SortedHalfEdges(
+  const Triangles& triangles, const std::vector<char>& valid, Index numberOfPoints)
+{
+  auto produce = [&](auto emit) {
+    for (Index t = 0; t < triangles.rows(); ++t)
+    {
+      if (valid[t])
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
+          emit(HalfEdge{ std::min(from, to), std::max(from, to), from, t });
+        }
+      }
+    }
+  };
+  if (numberOfPoints > 4 * 3 * triangles.rows() + 1024)
+  {
+    // Indices far beyond the mesh's size (OrientConsistently takes the largest index as
+    // the point count): a bucket per index would cost more than a comparison sort. Same
+    // order: stable, by (Low, High).
+    std::vector<HalfEdge> halfEdges;
+    produce([&](const HalfEdge& h) { halfEdges.push_back(h); });
+    std::stable_sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
+      return x.Low != y.Low ? x.Low < y.Low : x.High < y.High;
+    });
+    return halfEdges;
+  }
+  return BucketSorted<HalfEdge>(
+    numberOfPoints, produce, [](const HalfEdge& h) { return h.Low; },
+    [](const HalfEdge& x, const HalfEdge& y) { return x.High < y.High; });
 }
 
 // Calls visit(begin, end) for each group of half-edges sharing an edge.
@@ -293,18 +333,21 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   // A face listed twice (either way round) makes its edges non-manifold, and a single
   // triangle closed by FillHoles becomes two triangles on the same points (a "pillow" with
   // no inside): named as what they are rather than only through their edges.
-  std::vector<std::array<Index, 3>> corners;
-  corners.reserve(static_cast<size_t>(validCount));
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    if (valid[t])
+  using Corners = std::array<Index, 3>;
+  auto produceCorners = [&](auto emit) {
+    for (Index t = 0; t < triangles.rows(); ++t)
     {
-      std::array<Index, 3> sorted = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
-      std::sort(sorted.begin(), sorted.end());
-      corners.push_back(sorted);
+      if (valid[t])
+      {
+        Corners sorted = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+        std::sort(sorted.begin(), sorted.end());
+        emit(sorted);
+      }
     }
-  }
-  std::sort(corners.begin(), corners.end());
+  };
+  const std::vector<Corners> corners = BucketSorted<Corners>(
+    n, produceCorners, [](const Corners& c) { return c[0]; },
+    [](const Corners& x, const Corners& y) { return x[1] != y[1] ? x[1] < y[1] : x[2] < y[2]; });
   for (size_t i = 1; i < corners.size(); ++i)
   {
     report.DuplicateTriangles += corners[i] == corners[i - 1] ? 1 : 0;
@@ -312,7 +355,7 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   const Index usedCount = std::count(used.begin(), used.end(), 1);
   report.UnusedPoints = n - usedCount;
 
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, n);
   ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
     ++report.Edges;
     const size_t sides = end - begin;
@@ -351,77 +394,35 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   }
 
   // Vertex fans: the triangles around v, joined when they share an edge (v, w). A manifold
-  // vertex has one fan; two cones touching at their tips have two.
-  std::vector<Index> firstTriangle(static_cast<size_t>(n) + 1, 0);
+  // vertex has one fan; two cones touching at their tips have two. The triangles' corners
+  // (3 t + k) are the elements; every edge joins the corners of its triangles at each of its
+  // two ends, so each fan of v ends up as one set of v's corners.
+  UnionFind fans(3 * triangles.rows());
+  auto corner = [&](Index t, Index v) {
+    return 3 * t + (triangles(t, 0) == v ? 0 : triangles(t, 1) == v ? 1 : 2);
+  };
+  ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
+    const HalfEdge& first = halfEdges[begin];
+    for (size_t i = begin + 1; i < end; ++i)
+    {
+      fans.Union(corner(halfEdges[i].Triangle, first.Low), corner(first.Triangle, first.Low));
+      fans.Union(corner(halfEdges[i].Triangle, first.High), corner(first.Triangle, first.High));
+    }
+  });
+  std::vector<Index> fansAt(static_cast<size_t>(n), 0);
   for (Index t = 0; t < triangles.rows(); ++t)
   {
     if (valid[t])
     {
       for (int k = 0; k < 3; ++k)
       {
-        ++firstTriangle[triangles(t, k) + 1];
+        fansAt[triangles(t, k)] += fans.Find(3 * t + k) == 3 * t + k ? 1 : 0;
       }
     }
   }
-  std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
-  std::vector<Index> incident(static_cast<size_t>(firstTriangle[n]));
-  {
-    std::vector<Index> fill(firstTriangle.begin(), firstTriangle.end() - 1);
-    for (Index t = 0; t < triangles.rows(); ++t)
-    {
-      if (valid[t])
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          incident[fill[triangles(t, k)]++] = t;
-        }
-      }
-    }
-  }
-  std::vector<std::pair<Index, Index>> neighbours; // (other vertex, local triangle number)
-  std::vector<Index> fanParent;
   for (Index v = 0; v < n; ++v)
   {
-    const Index begin = firstTriangle[v], count = firstTriangle[v + 1] - begin;
-    if (count == 0)
-    {
-      continue;
-    }
-    neighbours.clear();
-    for (Index j = 0; j < count; ++j)
-    {
-      const Index t = incident[begin + j];
-      for (int k = 0; k < 3; ++k)
-      {
-        if (triangles(t, k) != v)
-        {
-          neighbours.emplace_back(triangles(t, k), j);
-        }
-      }
-    }
-    std::sort(neighbours.begin(), neighbours.end());
-    fanParent.resize(static_cast<size_t>(count));
-    std::iota(fanParent.begin(), fanParent.end(), Index(0));
-    auto find = [&](Index i) {
-      while (fanParent[i] != i)
-      {
-        i = fanParent[i] = fanParent[fanParent[i]];
-      }
-      return i;
-    };
-    for (size_t i = 1; i < neighbours.size(); ++i)
-    {
-      if (neighbours[i].first == neighbours[i - 1].first)
-      {
-        fanParent[find(neighbours[i].second)] = find(neighbours[i - 1].second);
-      }
-    }
-    Index fans = 0;
-    for (Index j = 0; j < count; ++j)
-    {
-      fans += find(j) == j ? 1 : 0;
-    }
-    report.NonManifoldVertices += fans > 1 ? 1 : 0;
+    report.NonManifoldVertices += fansAt[v] > 1 ? 1 : 0;
   }
 
   report.EulerCharacteristic = usedCount - report.Edges + validCount;
@@ -595,7 +596,7 @@ MeshProvenance ExtractLargestComponent(Points& points, Triangles& triangles)
 Index FillHoles(Points& points, Triangles& triangles, MeshProvenance* provenance)
 {
   const std::vector<char> valid = ValidTriangles(triangles, points.rows());
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, points.rows());
   std::vector<std::vector<Index>> loops;
   std::vector<char> closed;
   TraceBoundaryLoops(halfEdges, loops, closed);
@@ -674,27 +675,29 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
     numberOfPoints = std::max(numberOfPoints, triangles.row(t).maxCoeff() + 1);
   }
   const std::vector<char> valid = ValidTriangles(triangles, numberOfPoints);
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid);
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, numberOfPoints);
 
-  // Triangle adjacency across two-triangle edges, with whether the pair currently agrees.
+  // Triangle adjacency across two-triangle edges, with whether the pair currently agrees. On
+  // manifold edges a triangle has at most three neighbours: fixed slots, no list per triangle.
   struct Neighbour
   {
     Index Triangle;
     bool SameDirection; // both traverse the shared edge the same way: orientations disagree
   };
-  std::vector<std::vector<Neighbour>> adjacency(static_cast<size_t>(triangles.rows()));
+  std::vector<std::array<Neighbour, 3>> adjacency(static_cast<size_t>(triangles.rows()));
+  std::vector<unsigned char> neighbourCount(static_cast<size_t>(triangles.rows()), 0);
   bool manifold = true;
   ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
     if (end - begin > 2)
     {
       manifold = false;
     }
-    else if (end - begin == 2)
+    else if (end - begin == 2 && manifold)
     {
       const HalfEdge &x = halfEdges[begin], &y = halfEdges[begin + 1];
       const bool same = x.From == y.From;
-      adjacency[x.Triangle].push_back({ y.Triangle, same });
-      adjacency[y.Triangle].push_back({ x.Triangle, same });
+      adjacency[x.Triangle][neighbourCount[x.Triangle]++] = { y.Triangle, same };
+      adjacency[y.Triangle][neighbourCount[y.Triangle]++] = { x.Triangle, same };
     }
   });
   if (!manifold)
@@ -716,8 +719,9 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
     for (size_t q = 0; q < queue.size(); ++q)
     {
       const Index t = queue[q];
-      for (const Neighbour& nb : adjacency[t])
+      for (int i = 0; i < neighbourCount[t]; ++i)
       {
+        const Neighbour& nb = adjacency[t][i];
         const signed char wanted =
           static_cast<signed char>(nb.SameDirection ? 1 - reverse[t] : reverse[t]);
         if (reverse[nb.Triangle] < 0)

@@ -44,7 +44,8 @@ struct MeshTopologyReport
   bool IsTopologicalSphere() const;
 };
 
-/// Analyzes the triangles; runs in O(points + triangles log triangles).
+/// Analyzes the triangles; runs in O(points log points + triangles) (the log: finding
+/// duplicate points by sorting them).
 MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& triangles);
 
 /// The problems that keep the mesh from being a topological sphere, as readable phrases
