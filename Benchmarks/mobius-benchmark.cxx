@@ -4,6 +4,8 @@
 //
 //   mobius-benchmark [--repeat N] [--resolutions 128,256,512] [--stages map,grid,register,correspond] MESH...
 //   mobius-benchmark --ladder MAX_VERTICES [--ladder-csv FILE] MESH...
+//   (--surface-start with either: the conformal flow starts from the surface, as before the
+//   linear start, for before/after comparisons in one run)
 //
 // map: vtkSphericalConformalMap + vtkMobiusCenter. grid: vtkSphericalScaleGrid at each
 // resolution (exact rasterization, forward and inverse transform). register: vtkSO3Register
@@ -55,6 +57,10 @@
 
 namespace
 {
+// Start the conformal flow from the linear conformal map (vtkSphericalConformalMap's
+// default); --surface-start turns it off.
+bool LinearStart = true;
+
 double PeakMemoryMB()
 {
   rusage usage{};
@@ -261,6 +267,7 @@ LadderRung MapInChild(vtkPolyData* mesh)
     const auto start = std::chrono::steady_clock::now();
     vtkNew<vtkSphericalConformalMap> filter;
     filter->SetInputData(mesh);
+    filter->SetLinearStart(LinearStart);
     filter->Update();
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -373,6 +380,8 @@ int Usage(std::ostream& out, int status)
          "                        [--stages map,grid,register,correspond,refine] MESH [MESH ...]\n"
          "       mobius-benchmark --ladder MAX_VERTICES [--ladder-csv FILE] MESH [MESH ...]\n"
          "       mobius-benchmark --version | -h/--help\n"
+         "--surface-start (with either form): start the conformal flow from the surface\n"
+         "instead of the linear conformal map, to compare the two in one run.\n"
          "\n"
          "Per stage: seconds (median of N runs, default 3), quality figures and peak memory,\n"
          "as Markdown tables. Meshes: .obj .off .ply .stl .vtp .vtk. Build Release to measure.\n"
@@ -417,6 +426,10 @@ int main(int argc, char* argv[])
     else if (argument == "--ladder-csv" && i + 1 < argc)
     {
       ladderCsv = argv[++i];
+    }
+    else if (argument == "--surface-start")
+    {
+      LinearStart = false;
     }
     else if (argument == "--help" || argument == "-h")
     {
@@ -474,6 +487,7 @@ int main(int argc, char* argv[])
     const double mapSeconds = TimeMedian(repeat, [&] {
       vtkNew<vtkSphericalConformalMap> filter;
       filter->SetInputData(mesh);
+      filter->SetLinearStart(LinearStart);
       filter->Update();
       map = filter->GetOutput();
     });
@@ -570,6 +584,7 @@ int main(int argc, char* argv[])
       auto bent = BentCopy(mesh);
       vtkNew<vtkSphericalConformalMap> targetMap;
       targetMap->SetInputData(bent);
+      targetMap->SetLinearStart(LinearStart);
       vtkNew<vtkMobiusCenter> targetCentered;
       targetCentered->SetInputConnection(targetMap->GetOutputPort());
       targetCentered->Update();

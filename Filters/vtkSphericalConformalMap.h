@@ -35,7 +35,8 @@
  * - every point and cell array of the input (points and triangles created by FillHoles
  *   get zero values);
  * - field data: `ConformalFlowIterations`, `ConformalFlowRelativeChange`,
- *   `ConformalFlowConverged` (0/1), `FlippedTriangles` (triangles with det(a,b,c) <= 0 on
+ *   `ConformalFlowConverged` (0/1), `ConformalFlowLinearStart` (0/1: the flow started from
+ *   the linear conformal map), `FlippedTriangles` (triangles with det(a,b,c) <= 0 on
  *   the sphere), `MeanQuasiConformalDistortion` (area-weighted mean over triangles of the
  *   ratio of the singular values of the linear map from the surface triangle to the
  *   spherical chord triangle; 1 is conformal), `MaxQuasiConformalDistortion`,
@@ -100,6 +101,20 @@ public:
   vtkSetMacro(CenterBetweenSteps, vtkTypeBool);
   vtkGetMacro(CenterBetweenSteps, vtkTypeBool);
   vtkBooleanMacro(CenterBetweenSteps, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Start the flow from a linear conformal map (one sparse solve: the surface punctured in
+   * a flat, well-shaped triangle, mapped to the plane and projected onto the sphere) instead
+   * of from the surface, so that the flow only polishes it and converges in fewer steps to
+   * the same map. Default on; off reproduces the published flow. The field data
+   * `ConformalFlowLinearStart` says whether the linear start was used (it falls back on the
+   * surface if the linear map cannot be computed).
+   */
+  vtkSetMacro(LinearStart, vtkTypeBool);
+  vtkGetMacro(LinearStart, vtkTypeBool);
+  vtkBooleanMacro(LinearStart, vtkTypeBool);
   ///@}
 
   enum IntrinsicDelaunayModes
@@ -173,6 +188,7 @@ protected:
   int MaximumNumberOfIterations = 100;
   double ConvergenceTolerance = 1e-4;
   vtkTypeBool CenterBetweenSteps = true;
+  vtkTypeBool LinearStart = true;
   int IntrinsicDelaunay = INTRINSIC_DELAUNAY_AUTOMATIC;
   double IntrinsicDelaunayAngle = 1.0;
   int FlipRepairPasses = 100;

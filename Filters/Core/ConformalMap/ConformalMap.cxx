@@ -1,6 +1,7 @@
 #include "ConformalMap.h"
 
 #include "CotangentLaplacian.h"
+#include "LinearSphericalMap.h"
 #include "MeshTopology.h"
 #include "MobiusCentering.h"
 #include "SparseCholesky.h"
@@ -72,7 +73,7 @@ std::vector<Index> DiagonalPositions(const SparseMatrix& matrix)
   return positions;
 }
 
-// Progress after `steps` flow steps. The number of steps is not known in advance (8-13 on
+// Progress after `steps` flow steps. The number of steps is not known in advance (3-13 on
 // every development mesh, at most the limit), so the fraction approaches 0.95 geometrically
 // (9 steps: 0.77) instead of counting against the limit (9 of 100 would leave the bar
 // at 9% for the whole map); the steps after the flow take the rest.
@@ -80,6 +81,19 @@ double FlowProgress(int steps, int limit)
 {
   const double expected = 1.0 - std::pow(0.85, steps);
   return steps >= limit ? 0.95 : 0.05 + 0.9 * expected;
+}
+
+// Signed volume enclosed by the triangles (positive when they face outward).
+double EnclosedVolume(const Points& x, const Triangles& triangles)
+{
+  double volume = 0.0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::Vector3d a = x.row(triangles(t, 0)), b = x.row(triangles(t, 1)),
+                          c = x.row(triangles(t, 2));
+    volume += SignedVolume(a, b, c);
+  }
+  return volume;
 }
 
 ConformalMapResult Fail(ConformalMapResult& result, const std::string& message)
@@ -129,6 +143,9 @@ ConformalMapResult MapToSphere(
   }
 
   const Vector originalAreas = TriangleAreas(x, triangles); // centering weights
+  // The flow from the surface keeps the input's orientation, the linear start's map faces
+  // outward whatever the input's does: remember which way the input faced.
+  const bool inputFacesInward = EnclosedVolume(x, triangles) < 0.0;
 
   SparseMatrix stiffness;
   CotangentStiffnessInfo stiffnessInfo;
@@ -148,6 +165,31 @@ ConformalMapResult MapToSphere(
   if (!solver.Analyze(system))
   {
     return Fail(result, "the sparse Cholesky analysis failed");
+  }
+  if (p.LinearStart)
+  {
+    // Start the flow from a conformal map instead of the surface: the flow then only
+    // polishes it. If the linear map cannot be computed, the flow starts from the surface
+    // as it always could.
+    const LinearSphericalMapResult start =
+      ComputeLinearSphericalMap(x, triangles, stiffness, mass, solver);
+    result.PoleTriangle = start.PoleTriangle;
+    Points startPoints = start.SpherePoints;
+    MobiusCenteringResult centering;
+    Vector startMass;
+    if (start.Success &&
+      CenterSphericalMap(startPoints, triangles, originalAreas, MobiusCenteringParameters(),
+        centering) &&
+      NormalizeShape(startPoints, triangles, startMass))
+    {
+      x.swap(startPoints);
+      mass.swap(startMass);
+      result.LinearStart = true;
+    }
+    else
+    {
+      result.LinearStartError = start.Success ? "its Möbius centering failed" : start.Error;
+    }
   }
   if (p.Progress && !p.Progress(0.05))
   {
@@ -247,19 +289,13 @@ ConformalMapResult MapToSphere(
     }
     x.row(i) /= r;
   }
-  // Face outward: if the triangles enclose negative volume, mirror the map.
-  double volume = 0.0;
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::Vector3d a = x.row(triangles(t, 0)), b = x.row(triangles(t, 1)),
-                          c = x.row(triangles(t, 2));
-    volume += SignedVolume(a, b, c);
-  }
-  if (volume < 0.0)
+  // Face outward: if the triangles enclose negative volume (the flow from a surface whose
+  // triangles face inward), mirror the map.
+  if (EnclosedVolume(x, triangles) < 0.0)
   {
     x.col(0) *= -1.0;
-    result.Reflected = true;
   }
+  result.Reflected = inputFacesInward;
   if (p.SqueezedRegionThreshold > 0.0)
   {
     // On failure the affected regions keep the flow's positions: still a valid map.
