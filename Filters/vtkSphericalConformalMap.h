@@ -36,7 +36,8 @@
  *   get zero values);
  * - field data: `ConformalFlowIterations`, `ConformalFlowRelativeChange`,
  *   `ConformalFlowConverged` (0/1), `ConformalFlowLinearStart` (0/1: the flow started from
- *   the linear conformal map), `FlippedTriangles` (triangles with det(a,b,c) <= 0 on
+ *   the linear conformal map), `ConformalFlowFactorizations` (numeric Cholesky
+ *   factorizations made), `FlippedTriangles` (triangles with det(a,b,c) <= 0 on
  *   the sphere), `MeanQuasiConformalDistortion` (area-weighted mean over triangles of the
  *   ratio of the singular values of the linear map from the surface triangle to the
  *   spherical chord triangle; 1 is conformal), `MaxQuasiConformalDistortion`,
@@ -117,6 +118,20 @@ public:
   vtkBooleanMacro(LinearStart, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * Solve each flow step after the first by conjugate gradients preconditioned with the
+   * first step's Cholesky factorization instead of factorizing again (a new factorization
+   * only when that does not converge in 10 iterations): the same steps and map, at the cost
+   * of a few triangular solves per step. Default on; the field data
+   * `ConformalFlowFactorizations` counts the factorizations made (the linear start's
+   * included).
+   */
+  vtkSetMacro(ReuseFactorization, vtkTypeBool);
+  vtkGetMacro(ReuseFactorization, vtkTypeBool);
+  vtkBooleanMacro(ReuseFactorization, vtkTypeBool);
+  ///@}
+
   enum IntrinsicDelaunayModes
   {
     INTRINSIC_DELAUNAY_OFF = 0,
@@ -189,6 +204,7 @@ protected:
   double ConvergenceTolerance = 1e-4;
   vtkTypeBool CenterBetweenSteps = true;
   vtkTypeBool LinearStart = true;
+  vtkTypeBool ReuseFactorization = true;
   int IntrinsicDelaunay = INTRINSIC_DELAUNAY_AUTOMATIC;
   double IntrinsicDelaunayAngle = 1.0;
   int FlipRepairPasses = 100;

@@ -221,9 +221,23 @@ void TestLinearStart()
   MOBIUS_CHECK(d.MeanQuasiConformal < 1.12); // measured 1.080 (the flow's map: 1.026)
   ConformalMapParameters parameters;
   parameters.LinearStart = false;
+  parameters.ReuseFactorization = false;
   const ConformalMapResult fromSurface = ComputeSphericalConformalMap(p, t, parameters);
+  MOBIUS_CHECK(fromSurface.Factorizations == fromSurface.Iterations);
+  MOBIUS_CHECK(fromSurface.ConjugateGradientIterations == 0);
   parameters.LinearStart = true;
+  const ConformalMapResult factorizingEachStep = ComputeSphericalConformalMap(p, t, parameters);
+  MOBIUS_CHECK(factorizingEachStep.Factorizations == factorizingEachStep.Iterations + 1);
+  parameters.ReuseFactorization = true;
   const ConformalMapResult fromLinear = ComputeSphericalConformalMap(p, t, parameters);
+  // Reusing the first step's factorization: the linear start's and the first step's are
+  // the only ones, a few conjugate gradient iterations per later step (measured 3-4), and
+  // the same steps and map as factorizing each step's matrix.
+  MOBIUS_CHECK(fromLinear.Factorizations == 2);
+  MOBIUS_CHECK(fromLinear.ConjugateGradientIterations > 0);
+  MOBIUS_CHECK(fromLinear.ConjugateGradientIterations <= 5 * (fromLinear.Iterations - 1));
+  MOBIUS_CHECK(fromLinear.Iterations == factorizingEachStep.Iterations);
+  MOBIUS_CHECK(DistanceUpToRotation(fromLinear.SpherePoints, factorizingEachStep.SpherePoints) < 1e-8);
   MOBIUS_CHECK(fromSurface.Success && fromLinear.Success);
   MOBIUS_CHECK(!fromSurface.LinearStart && fromSurface.PoleTriangle == -1);
   MOBIUS_CHECK(fromLinear.LinearStart && fromLinear.LinearStartError.empty());

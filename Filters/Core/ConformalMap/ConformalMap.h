@@ -18,6 +18,8 @@
 // - the stiffness on the intrinsic Delaunay triangulation: needle triangles (0.01 degrees)
 //   give no extreme or negative weights;
 // - a convergence test, one symbolic factorization, a 3-column solve for the displacement;
+//   after the first step, preconditioned conjugate gradients with that step's factorization
+//   instead of a new one (ReuseFactorization);
 // - at the end: projection onto the unit sphere, mirroring if the triangles face inward,
 //   re-solving regions squeezed below 1e-7 in local coordinates, and local sweeps that
 //   unfold the few triangles still flipped (needles whose apex crosses the long edge).
@@ -72,6 +74,12 @@ struct ConformalMapParameters
   /// distance 1e-5 to 7e-5 after the best rotation, mean quasi-conformal distortion equal to
   /// 3-5 digits). False: the published flow from the surface.
   bool LinearStart = true;
+  /// Solve each step's system (M_t + delta L) by conjugate gradients preconditioned with
+  /// the factorization of an earlier step's, to a relative residual of 1e-10, and factorize
+  /// only when that takes more than 10 iterations. Near convergence M_t changes little
+  /// from step to step: measured 3-4 iterations (triangular solves) instead of a
+  /// factorization for every step after the first, with the same steps and map.
+  bool ReuseFactorization = true;
   /// Optional extra step between iterations (see FlowStepHook), after the centering.
   FlowStepHook BetweenSteps;
   /// Progress in [0, 1]; returning false aborts.
@@ -97,6 +105,10 @@ struct ConformalMapResult
   std::string LinearStartError;
   /// The triangle the linear map put at the north pole (-1 without it).
   Index PoleTriangle = -1;
+  /// Numeric Cholesky factorizations (the linear start's and the flow's) and conjugate
+  /// gradient iterations of the steps that reused one (see ReuseFactorization).
+  int Factorizations = 0;
+  int ConjugateGradientIterations = 0;
   /// Edge flips made for the intrinsic Delaunay stiffness.
   Index IntrinsicFlips = 0;
   /// The input's triangles faced inward (negative enclosed volume), so the map, whose

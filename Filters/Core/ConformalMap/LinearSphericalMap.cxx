@@ -126,6 +126,7 @@ LinearSphericalMapResult ComputeLinearSphericalMap(const Points& points,
   {
     shifted.coeffRef(i, i) += MassShift * mass[i];
   }
+  result.Factorized = true;
   if (!solver.Factorize(shifted))
   {
     result.Error = "the factorization of the shifted Laplacian failed";

@@ -44,6 +44,8 @@ struct LinearSphericalMapResult
   std::string Error;
   /// The triangle that contains the pole (the north pole of the map).
   Index PoleTriangle = -1;
+  /// The solver was asked to factorize (L + eps M): it no longer holds what it held.
+  bool Factorized = false;
   /// One point per vertex on the unit sphere (not yet Möbius-centered).
   Points SpherePoints;
 };
