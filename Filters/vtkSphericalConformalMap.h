@@ -109,7 +109,9 @@ public:
    * Start the flow from a linear conformal map (one sparse solve: the surface punctured in
    * a flat, well-shaped triangle, mapped to the plane and projected onto the sphere) instead
    * of from the surface, so that the flow only polishes it and converges in fewer steps to
-   * the same map. Default on; off reproduces the published flow. The field data
+   * the same map (up to a rotation). Default on (used only with CenterBetweenSteps); off
+   * reproduces the published flow, which also keeps a mirror symmetry of the surface
+   * exactly (vtkSymmetryDetection uses it). The field data
    * `ConformalFlowLinearStart` says whether the linear start was used (it falls back on the
    * surface if the linear map cannot be computed).
    */
@@ -120,10 +122,11 @@ public:
 
   ///@{
   /**
-   * Solve each flow step after the first by conjugate gradients preconditioned with the
-   * first step's Cholesky factorization instead of factorizing again (a new factorization
-   * only when that does not converge in 10 iterations): the same steps and map, at the cost
-   * of a few triangular solves per step. Default on; the field data
+   * On meshes of 50,000 vertices or more, solve each flow step after the first by
+   * conjugate gradients preconditioned with the first step's Cholesky factorization
+   * instead of factorizing again (a new factorization only when that does not converge in
+   * 10 iterations): the same steps and map, at the cost of a few triangular solves per step
+   * (smaller meshes' factorizations cost about as much). Default on; the field data
    * `ConformalFlowFactorizations` counts the factorizations made (the linear start's
    * included).
    */

@@ -229,6 +229,9 @@ void TestLinearStart()
   const ConformalMapResult factorizingEachStep = ComputeSphericalConformalMap(p, t, parameters);
   MOBIUS_CHECK(factorizingEachStep.Factorizations == factorizingEachStep.Iterations + 1);
   parameters.ReuseFactorization = true;
+  const ConformalMapResult smallMesh = ComputeSphericalConformalMap(p, t, parameters);
+  MOBIUS_CHECK(smallMesh.Factorizations == factorizingEachStep.Factorizations); // below 50K
+  parameters.ReuseFactorizationMinimumSize = 0;
   const ConformalMapResult fromLinear = ComputeSphericalConformalMap(p, t, parameters);
   // Reusing the first step's factorization: the linear start's and the first step's are
   // the only ones, a few conjugate gradient iterations per later step (measured 3-4), and
@@ -251,6 +254,28 @@ void TestLinearStart()
   MOBIUS_CHECK(DistancesUpToRotation(fromLinear.SpherePoints, fromSurface.SpherePoints).mean() < 1e-3);
   // The linear map itself is near the flow's result (measured 0.014).
   MOBIUS_CHECK(DistancesUpToRotation(linear.SpherePoints, fromSurface.SpherePoints).mean() < 0.03);
+
+  // A turned copy gets the turned map (the linear map is turned to the surface's
+  // orientation, and the flow commutes with rotations), as from the surface. Up to the
+  // flow's tolerance, not to rounding: after rounding the turned copy may pick another,
+  // equally good pole triangle (here it does: measured 9e-4; without the turn to the
+  // surface's orientation both maps would be the same, up to 0.96 apart).
+  const Eigen::Matrix3d turn =
+    Eigen::AngleAxisd(1.0, Eigen::Vector3d(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
+  const Points turned = p * turn.transpose();
+  const ConformalMapResult turnedMap = ComputeSphericalConformalMap(turned, t, parameters);
+  MOBIUS_CHECK(turnedMap.Success && turnedMap.LinearStart);
+  MOBIUS_CHECK(((fromLinear.SpherePoints * turn.transpose()) - turnedMap.SpherePoints)
+                 .rowwise().norm().maxCoeff() < 5e-3);
+  // ... and ends near the orientation of the flow from the surface (measured 3.5e-4).
+  MOBIUS_CHECK((fromLinear.SpherePoints - fromSurface.SpherePoints).rowwise().norm().mean() < 5e-3);
+
+  // Plain CMCF (no centering between steps) is the published flow from the surface.
+  ConformalMapParameters plain;
+  plain.MobiusCentering = false;
+  plain.MaximumNumberOfIterations = 3;
+  const ConformalMapResult plainFlow = ComputeSphericalConformalMap(p, t, plain);
+  MOBIUS_CHECK(plainFlow.Success && !plainFlow.LinearStart && plainFlow.PoleTriangle == -1);
 
   // The input's triangles facing inward: the linear start's map faces outward by
   // construction; it is still reported as a mirror image of the surface.

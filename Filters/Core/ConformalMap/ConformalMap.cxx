@@ -9,6 +9,7 @@
 #include "SqueezedRegionRefinement.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 
 #include <cmath>
 #include <exception>
@@ -140,6 +141,17 @@ double FlowProgress(int steps, int limit)
   return steps >= limit ? 0.95 : 0.05 + 0.9 * expected;
 }
 
+// The rotation R that best maps the points `from` onto `to` (weighted least squares of
+// R from_i - to_i; Kabsch), a proper rotation.
+Eigen::Matrix3d BestRotation(const Points& from, const Points& to, const Vector& weights)
+{
+  const Eigen::Matrix3d covariance = from.transpose() * weights.asDiagonal() * to;
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
+  sign(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  return svd.matrixV() * sign * svd.matrixU().transpose();
+}
+
 // Signed volume enclosed by the triangles (positive when they face outward).
 double EnclosedVolume(const Points& x, const Triangles& triangles)
 {
@@ -223,7 +235,7 @@ ConformalMapResult MapToSphere(
   {
     return Fail(result, "the sparse Cholesky analysis failed");
   }
-  if (p.LinearStart)
+  if (p.LinearStart && p.MobiusCentering)
   {
     // Start the flow from a conformal map instead of the surface: the flow then only
     // polishes it. If the linear map cannot be computed, the flow starts from the surface
@@ -240,6 +252,12 @@ ConformalMapResult MapToSphere(
         centering) &&
       NormalizeShape(startPoints, triangles, startMass))
     {
+      // The linear map is intrinsic (its pole triangle and frame are chosen from the
+      // surface's shape), so a turned copy of the surface would get the same map. Turn it
+      // to the surface's own orientation instead: the flow commutes with rotations, so the
+      // map then turns with the input as the flow from the surface does (SO3Register of a
+      // turned copy finds the turn), and ends close to that flow's orientation.
+      startPoints = startPoints * BestRotation(startPoints, x, startMass).transpose();
       x.swap(startPoints);
       mass.swap(startMass);
       result.LinearStart = true;
@@ -276,6 +294,7 @@ ConformalMapResult MapToSphere(
     // polishes; a step that needs more than 10 is far from the factorized one.
     int cgIterations = 0;
     const bool reused = p.ReuseFactorization && haveFlowFactorization &&
+      x.rows() >= p.ReuseFactorizationMinimumSize &&
       SolveWithNearbyFactorization(system, solver, rhs, 1e-10, 10, displacement, cgIterations);
     if (reused)
     {

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <utility>
@@ -54,8 +55,13 @@ Index ChoosePoleTriangle(const Points& points, const Triangles& triangles)
   std::nth_element(sortedAreas.begin(), median, sortedAreas.end());
   const double medianArea = *median;
 
+  // The choice must not depend on the vertices' or triangles' numbering (a mesh split over
+  // MPI ranks and merged again maps to the same map): scores are compared after rounding
+  // away the last bits their summation order changes, and ties go to the triangle whose
+  // centroid comes first in (x, y, z), also rounded.
+  auto rounded = [](double value) { return std::round(value * 1e9); };
   Index best = -1;
-  double bestScore = -1.0;
+  std::array<double, 4> bestKey = { -1.0, 0.0, 0.0, 0.0 };
   for (Index t = 0; t < count; ++t)
   {
     if (!(areas[t] > 0.0) || !std::isfinite(areas[t]) || areas[t] < medianArea)
@@ -78,9 +84,18 @@ Index ChoosePoleTriangle(const Points& points, const Triangles& triangles)
       flatness = std::min(flatness, length > 0.0 ? n.dot(m) / length : -1.0);
     }
     const double score = quality * std::max(flatness, 0.0);
-    if (std::isfinite(score) && score > bestScore)
+    if (!std::isfinite(score))
     {
-      bestScore = score;
+      continue;
+    }
+    const Eigen::RowVector3d centroid = (points.row(triangles(t, 0)) +
+      points.row(triangles(t, 1)) + points.row(triangles(t, 2))) / 3.0;
+    // Larger score first, then smaller centroid coordinates.
+    const std::array<double, 4> key = { rounded(score), -rounded(centroid[0]),
+      -rounded(centroid[1]), -rounded(centroid[2]) };
+    if (best < 0 || key > bestKey)
+    {
+      bestKey = key;
       best = t;
     }
   }
