@@ -337,6 +337,8 @@ int vtkSphericalConformalMap::ComputeOutput(
       mobius::SmallestTriangleAngleDegrees(points, triangles) < this->IntrinsicDelaunayAngle);
   parameters.FlipRepairPasses = this->FlipRepairPasses;
   parameters.MobiusCentering = this->CenterBetweenSteps;
+  parameters.LinearStart = this->LinearStart;
+  parameters.ReuseFactorization = this->ReuseFactorization;
   parameters.Progress = [this](double fraction) {
     this->UpdateProgress(fraction);
     return !this->GetAbortExecute();
@@ -474,6 +476,8 @@ int vtkSphericalConformalMap::ComputeOutput(
   SetFieldValue(fieldData, "ConformalFlowIterations", result.Iterations);
   SetFieldValue(fieldData, "ConformalFlowRelativeChange", result.RelativeChange);
   SetFieldValue(fieldData, "ConformalFlowConverged", result.Converged ? 1 : 0);
+  SetFieldValue(fieldData, "ConformalFlowLinearStart", result.LinearStart ? 1 : 0);
+  SetFieldValue(fieldData, "ConformalFlowFactorizations", result.Factorizations);
   SetFieldValue(fieldData, "FlippedTriangles", static_cast<double>(result.Distortion.FlippedTriangles));
   SetFieldValue(fieldData, "MeanQuasiConformalDistortion", result.Distortion.MeanQuasiConformal);
   SetFieldValue(fieldData, "MaxQuasiConformalDistortion", result.Distortion.MaxQuasiConformal);
@@ -504,6 +508,8 @@ void vtkSphericalConformalMap::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
   os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
   os << indent << "CenterBetweenSteps: " << this->CenterBetweenSteps << "\n";
+  os << indent << "LinearStart: " << this->LinearStart << "\n";
+  os << indent << "ReuseFactorization: " << this->ReuseFactorization << "\n";
   os << indent << "IntrinsicDelaunay: " << this->IntrinsicDelaunay << "\n";
   os << indent << "IntrinsicDelaunayAngle: " << this->IntrinsicDelaunayAngle << "\n";
   os << indent << "FlipRepairPasses: " << this->FlipRepairPasses << "\n";

@@ -35,7 +35,9 @@
  * - every point and cell array of the input (points and triangles created by FillHoles
  *   get zero values);
  * - field data: `ConformalFlowIterations`, `ConformalFlowRelativeChange`,
- *   `ConformalFlowConverged` (0/1), `FlippedTriangles` (triangles with det(a,b,c) <= 0 on
+ *   `ConformalFlowConverged` (0/1), `ConformalFlowLinearStart` (0/1: the flow started from
+ *   the linear conformal map), `ConformalFlowFactorizations` (numeric Cholesky
+ *   factorizations made), `FlippedTriangles` (triangles with det(a,b,c) <= 0 on
  *   the sphere), `MeanQuasiConformalDistortion` (area-weighted mean over triangles of the
  *   ratio of the singular values of the linear map from the surface triangle to the
  *   spherical chord triangle; 1 is conformal), `MaxQuasiConformalDistortion`,
@@ -100,6 +102,37 @@ public:
   vtkSetMacro(CenterBetweenSteps, vtkTypeBool);
   vtkGetMacro(CenterBetweenSteps, vtkTypeBool);
   vtkBooleanMacro(CenterBetweenSteps, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Start the flow from a linear conformal map (one sparse solve: the surface punctured in
+   * a flat, well-shaped triangle, mapped to the plane and projected onto the sphere) instead
+   * of from the surface, so that the flow only polishes it and converges in fewer steps to
+   * the same map (up to a rotation). Default on (used only with CenterBetweenSteps); off
+   * reproduces the published flow, which also keeps a mirror symmetry of the surface
+   * exactly (vtkSymmetryDetection uses it). The field data
+   * `ConformalFlowLinearStart` says whether the linear start was used (it falls back on the
+   * surface if the linear map cannot be computed).
+   */
+  vtkSetMacro(LinearStart, vtkTypeBool);
+  vtkGetMacro(LinearStart, vtkTypeBool);
+  vtkBooleanMacro(LinearStart, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * On meshes of 50,000 vertices or more, solve each flow step after the first by
+   * conjugate gradients preconditioned with the first step's Cholesky factorization
+   * instead of factorizing again (a new factorization only when that does not converge in
+   * 10 iterations): the same steps and map, at the cost of a few triangular solves per step
+   * (smaller meshes' factorizations cost about as much). Default on; the field data
+   * `ConformalFlowFactorizations` counts the factorizations made (the linear start's
+   * included).
+   */
+  vtkSetMacro(ReuseFactorization, vtkTypeBool);
+  vtkGetMacro(ReuseFactorization, vtkTypeBool);
+  vtkBooleanMacro(ReuseFactorization, vtkTypeBool);
   ///@}
 
   enum IntrinsicDelaunayModes
@@ -173,6 +206,8 @@ protected:
   int MaximumNumberOfIterations = 100;
   double ConvergenceTolerance = 1e-4;
   vtkTypeBool CenterBetweenSteps = true;
+  vtkTypeBool LinearStart = true;
+  vtkTypeBool ReuseFactorization = true;
   int IntrinsicDelaunay = INTRINSIC_DELAUNAY_AUTOMATIC;
   double IntrinsicDelaunayAngle = 1.0;
   int FlipRepairPasses = 100;

@@ -345,6 +345,19 @@ int TestRealMesh()
   reader->Update();
   const Outcome outcome = Map(reader->GetOutput());
   failures += ExpectGoodMap(outcome, reader->GetOutput()->GetNumberOfPoints(), 1.3);
+  // The flow from the linear start (the default) takes fewer steps to the same map as the
+  // flow from the surface (measured: 5 instead of 8 steps, mean QC equal to 5 digits).
+  const Outcome fromSurface =
+    Map(reader->GetOutput(), [](vtkSphericalConformalMap* map) { map->LinearStartOff(); });
+  failures += ExpectGoodMap(fromSurface, reader->GetOutput()->GetNumberOfPoints(), 1.3);
+  using mobius_test::FieldValue;
+  MOBIUS_EXPECT(FieldValue(outcome.Output, "ConformalFlowLinearStart") == 1);
+  MOBIUS_EXPECT(FieldValue(fromSurface.Output, "ConformalFlowLinearStart") == 0);
+  MOBIUS_EXPECT(FieldValue(outcome.Output, "ConformalFlowConverged") == 1);
+  MOBIUS_EXPECT(FieldValue(outcome.Output, "ConformalFlowIterations") + 2 <=
+    FieldValue(fromSurface.Output, "ConformalFlowIterations"));
+  MOBIUS_EXPECT(std::abs(FieldValue(outcome.Output, "MeanQuasiConformalDistortion") -
+                  FieldValue(fromSurface.Output, "MeanQuasiConformalDistortion")) < 1e-3);
   vtkNew<vtkSurfaceMeshReader> eight;
   eight->SetFileName(MOBIUS_MESH_DIR "/eight.off");
   eight->Update();

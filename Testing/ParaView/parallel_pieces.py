@@ -124,7 +124,13 @@ def compare(name, parallel, reference, tolerance, ordered=True):
             if mine is None:
                 continue
             a, b = values(mine)[p_rows], values(array)[r_rows]
-            check(same_values(a, b, tolerance), f"{name}: {kind} array {array_name} differs "
+            # The distortion of the cow's tiniest (squeezed) triangles is ill-conditioned:
+            # maps that agree to 1e-13 after a random renumbering of the cow's vertices give
+            # quasi-conformal distortions up to 2.8e-3 apart after centering (3.6e-4 with the
+            # flow from the surface, before the linear start).
+            distortion = kind == "cell" and array_name in ("QuasiConformalDistortion", "LogAreaRatio")
+            array_tolerance = 1e-2 if distortion and not ordered else tolerance
+            check(same_values(a, b, array_tolerance), f"{name}: {kind} array {array_name} differs "
                   f"(by up to {np.max(np.abs(a - b)) if a.shape == b.shape else 'shape'})")
     p_fields = arrays(parallel.GetFieldData())
     for array_name, array in arrays(reference.GetFieldData()).items():

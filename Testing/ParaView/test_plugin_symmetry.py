@@ -27,7 +27,9 @@ assert output.GetNumberOfPoints() == servermanager.Fetch(mesh).GetNumberOfPoints
 normal = [field(symmetry, "MirrorPlaneNormal", k) for k in range(3)]
 assert abs(sum(x * x for x in normal) - 1) < 1e-9, normal
 
-from_map = DetectSymmetry(Input=SphericalConformalMap(Input=mesh), Resolution=64)
+# Detect Symmetry maps a mesh by the flow from the surface (which keeps a mirror symmetry
+# exactly); the same map, given, gives the same answer.
+from_map = DetectSymmetry(Input=SphericalConformalMap(Input=mesh, LinearStart=0), Resolution=64)
 assert abs(field(from_map, "SymmetryDistance") - distance) < 1e-9
 
 uncentered = DetectSymmetry(Input=mesh, Resolution=64, Centering=0, Refine=0)

@@ -136,6 +136,9 @@ SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
   const Points coveringPoints = covering.CoveringPoints(points);
   ConformalMapParameters flow = parameters.Flow;
   flow.MaximumNumberOfIterations = parameters.Flow.MaximumNumberOfIterations + 1;
+  // The start is the lifted map, put in after the first step: a linear start would be
+  // computed only to be discarded.
+  flow.LinearStart = false;
   const FlowStepHook userHook = parameters.Flow.BetweenSteps;
   flow.BetweenSteps = [&](Points& positions, int iteration) {
     if (iteration == 1)
