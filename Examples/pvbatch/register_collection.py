@@ -6,9 +6,11 @@ Usage (K ranks of ParaView's MPI engine, or one process without mpiexec):
         --output RESULTS [--mode all|template|nearest] MESH [MESH ...]
     pvbatch register_collection.py --plugin ... --output RESULTS MESH [MESH ...]
 
-Per shape, once: the conformal map, its Möbius centering and a rotation-invariant descriptor
+Per shape, once: the conformal map, its Möbius centering, a rotation-invariant descriptor
 (the energy of each spherical-harmonic degree of the scale factors, vtkSphericalScaleGrid's
-DegreeEnergies). They are cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
+DegreeEnergies) and, for the spectral refinement, the surface's Laplace-Beltrami eigenbasis
+(vtkLaplaceBeltramiBasis, stored in the centered map: every pair the shape takes part in
+reuses it instead of solving the eigenproblem again). They are cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
 and of the parameters, so a rerun, or a run with meshes added, redoes only what is new; pair
 results are cached the same way. Ranks take shapes, then pairs, one at a time from a shared
 counter (dynamic balancing: large meshes do not hold the others up); each rank runs the
@@ -118,8 +120,8 @@ threads = args.threads if args.threads > 0 else share_of_cores()
 threads_per_rank = comm.allgather(threads) if comm else [threads]
 
 from mobiusregistration import (  # noqa: E402
-    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register,
-    vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
+    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkLaplaceBeltramiBasis, vtkMobiusCenter,
+    vtkSO3Register, vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
 from vtkmodules.vtkCommonCore import vtkCommand, vtkLookupTable, vtkUnsignedCharArray  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402
@@ -127,7 +129,12 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter  # no
 
 # What a cached result depends on besides the mesh (bump the version when the computation
 # changes so that old caches are not reused).
-SHAPE_PARAMETERS = {"version": 1, "descriptor_resolution": 64}
+# The refinement's eigenbasis: its size (the refinement's BasisSize) and the kind of basis
+# (vtkLaplaceBeltramiBasis's; the refinement refuses a stored basis of another kind anyway).
+BASIS_SIZE = 80
+SHAPE_PARAMETERS = {"version": 2, "descriptor_resolution": 64,
+                    "basis": {"size": BASIS_SIZE, "kind": "intrinsic Delaunay, lumped mass, v1"}
+                    if args.refine == "spectral" else None}
 PAIR_PARAMETERS = {"version": 1, "resolution": args.resolution, "refine": args.refine}
 DESCRIPTOR_DEGREES = 16
 
@@ -284,7 +291,17 @@ def map_shape(i):
     grid.Update()
     record = {"status": "failed", "error": "", "vertices": 0, "energies": [], "rank": rank}
     mapped = conformal.GetOutput()
-    if errors.messages or center.GetOutput().GetNumberOfPoints() == 0:
+    cached = center.GetOutput()
+    basis_seconds = 0.0
+    if not errors.messages and cached.GetNumberOfPoints() > 0 and SHAPE_PARAMETERS["basis"]:
+        basis_begin = time.perf_counter()
+        basis = errors.watch(vtkLaplaceBeltramiBasis())
+        basis.SetInputData(cached)
+        basis.SetBasisSize(BASIS_SIZE)
+        basis.Update()
+        cached = basis.GetOutput()
+        basis_seconds = time.perf_counter() - basis_begin
+    if errors.messages or cached.GetNumberOfPoints() == 0:
         record["error"] = "; ".join(errors.messages) or "no output"
     elif field_value(mapped, "DegenerateMap") == 1:
         # A degenerate map (flips left, collapsed area, no convergence) would give meaningless
@@ -295,8 +312,9 @@ def map_shape(i):
         energies = grid.GetOutput().GetFieldData().GetArray("DegreeEnergies")
         record.update(status="ok", vertices=center.GetOutput().GetNumberOfPoints(),
                       energies=[energies.GetValue(l) for l in range(min(DESCRIPTOR_DEGREES, energies.GetNumberOfValues()))])
-        write_polydata(center.GetOutput(), map_path)
+        write_polydata(cached, map_path)
     record["seconds"] = time.perf_counter() - begin
+    record["basis_seconds"] = basis_seconds
     write_json_atomically(record_path, record)
     record["cached"] = False
     return record
@@ -358,6 +376,8 @@ def register_pair(p):
     correspondence = errors.watch(vtkCorrespondenceRefinement() if args.refine == "spectral"
                                   else vtkDenseCorrespondence())
     correspondence.SetNumberOfThreads(threads)
+    if args.refine == "spectral":
+        correspondence.SetBasisSize(BASIS_SIZE)  # the stored bases' size: they are used
     correspondence.SetSourceConnection(registration.GetOutputPort())
     correspondence.SetTargetData(target_map)
     correspondence.Update()
@@ -376,6 +396,7 @@ def register_pair(p):
             correlation_coefficient=rho,
             registration_error=field_value(fields, "RegistrationError"),
             orthogonality_residual=field_value(result, "RefinementOrthogonalityResidual"),
+            stored_bases=int(sum(field_value(result, "RefinementStoredBasisUsed", k) == 1 for k in range(2))),
             distance=math.sqrt(max(0.0, (1.0 - rho) / 2.0)))
         if args.write_maps:
             write_polydata(result, map_path)
@@ -516,6 +537,8 @@ if rank == 0:
         "pairs": len(pairs), "pairs_failed": pair_failures,
         "pairs_computed": sum(1 for r in results.values() if not r["cached"]),
         "shape_seconds": sum(s["seconds"] for s in shapes.values() if not s["cached"]),
+        "basis_seconds": sum(s.get("basis_seconds", 0.0) for s in shapes.values() if not s["cached"]),
+        "pairs_with_stored_bases": sum(1 for r in results.values() if not r["cached"] and r.get("stored_bases") == 2),
         "pair_seconds": sum(r["seconds"] for r in results.values() if not r["cached"]),
     }
     write_json_atomically(os.path.join(args.output, "run.json"), summary)
