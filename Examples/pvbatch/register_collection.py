@@ -9,8 +9,9 @@ Usage (K ranks of ParaView's MPI engine, or one process without mpiexec):
 Per shape, once: the conformal map, its Möbius centering, a rotation-invariant descriptor
 (the energy of each spherical-harmonic degree of the scale factors, vtkSphericalScaleGrid's
 DegreeEnergies) and, for the spectral refinement, the surface's Laplace-Beltrami eigenbasis
-(vtkLaplaceBeltramiBasis, stored in the centered map: every pair the shape takes part in
-reuses it instead of solving the eigenproblem again). They are cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
+(vtkLaplaceBeltramiBasis, stored beside the centered map as a .npy file that every pair the
+shape takes part in maps into memory instead of solving the eigenproblem again). They are
+cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
 and of the parameters, so a rerun, or a run with meshes added, redoes only what is new; pair
 results are cached the same way. Ranks take shapes, then pairs, one at a time from a shared
 counter (dynamic balancing: large meshes do not hold the others up); each rank runs the
@@ -122,7 +123,9 @@ threads_per_rank = comm.allgather(threads) if comm else [threads]
 from mobiusregistration import (  # noqa: E402
     vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkLaplaceBeltramiBasis, vtkMobiusCenter,
     vtkSO3Register, vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
-from vtkmodules.vtkCommonCore import vtkCommand, vtkLookupTable, vtkUnsignedCharArray  # noqa: E402
+from vtkmodules.util import numpy_support  # noqa: E402
+from vtkmodules.vtkCommonCore import (  # noqa: E402
+    vtkCommand, vtkDoubleArray, vtkLookupTable, vtkStringArray, vtkUnsignedCharArray)
 from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter  # noqa: E402
@@ -187,6 +190,12 @@ def write_polydata(data, path):
     writer.SetFileName(partial)
     if writer.Write() != 1:
         raise OSError(f"cannot write {path}")
+    os.replace(partial, path)
+
+
+def write_array(array, path):
+    partial = f"{path}.{rank}.partial.npy"
+    numpy.save(partial, array)
     os.replace(partial, path)
 
 
@@ -264,16 +273,21 @@ keys = comm.bcast(keys, root=0) if comm else keys
 
 
 def shape_files(i):
+    """The shape's record, centered map and eigenbasis (n x BASIS_SIZE doubles, row-major).
+    The basis is not in the map's VTP: VTK's binary XML is base64, and decoding 11 MB of
+    eigenfunctions for a 17,000-vertex mesh took longer than computing them (measured),
+    while a .npy is mapped into memory."""
     base = os.path.join(cache, "shapes", keys[i])
-    return base + ".json", base + ".vtp"
+    return base + ".json", base + ".vtp", base + ".basis.npy"
 
 
 def map_shape(i):
-    record_path, map_path = shape_files(i)
+    record_path, map_path, basis_path = shape_files(i)
     if os.path.isfile(record_path):
         with open(record_path) as f:
             record = json.load(f)
-        if record["status"] != "ok" or os.path.isfile(map_path):
+        if record["status"] != "ok" or (os.path.isfile(map_path) and
+                                        (not SHAPE_PARAMETERS["basis"] or os.path.isfile(basis_path))):
             record["cached"] = True
             return record
     begin = time.perf_counter()
@@ -291,17 +305,8 @@ def map_shape(i):
     grid.Update()
     record = {"status": "failed", "error": "", "vertices": 0, "energies": [], "rank": rank}
     mapped = conformal.GetOutput()
-    cached = center.GetOutput()
     basis_seconds = 0.0
-    if not errors.messages and cached.GetNumberOfPoints() > 0 and SHAPE_PARAMETERS["basis"]:
-        basis_begin = time.perf_counter()
-        basis = errors.watch(vtkLaplaceBeltramiBasis())
-        basis.SetInputData(cached)
-        basis.SetBasisSize(BASIS_SIZE)
-        basis.Update()
-        cached = basis.GetOutput()
-        basis_seconds = time.perf_counter() - basis_begin
-    if errors.messages or cached.GetNumberOfPoints() == 0:
+    if errors.messages or center.GetOutput().GetNumberOfPoints() == 0:
         record["error"] = "; ".join(errors.messages) or "no output"
     elif field_value(mapped, "DegenerateMap") == 1:
         # A degenerate map (flips left, collapsed area, no convergence) would give meaningless
@@ -312,7 +317,26 @@ def map_shape(i):
         energies = grid.GetOutput().GetFieldData().GetArray("DegreeEnergies")
         record.update(status="ok", vertices=center.GetOutput().GetNumberOfPoints(),
                       energies=[energies.GetValue(l) for l in range(min(DESCRIPTOR_DEGREES, energies.GetNumberOfValues()))])
-        write_polydata(cached, map_path)
+        if SHAPE_PARAMETERS["basis"]:
+            basis_begin = time.perf_counter()
+            basis = errors.watch(vtkLaplaceBeltramiBasis())
+            basis.SetInputConnection(center.GetOutputPort())
+            basis.SetBasisSize(BASIS_SIZE)
+            basis.Update()
+            basis_seconds = time.perf_counter() - basis_begin
+            if errors.messages:
+                record.update(status="failed", error="; ".join(errors.messages))
+            else:
+                fields = basis.GetOutput().GetFieldData()
+                write_array(numpy_support.vtk_to_numpy(
+                    basis.GetOutput().GetPointData().GetArray("LaplaceBeltramiBasis")), basis_path)
+                eigenvalues = fields.GetArray("LaplaceBeltramiEigenvalues")
+                # Python's float repr round-trips: the eigenvalues come back to the last bit.
+                record["basis"] = {
+                    "eigenvalues": [eigenvalues.GetValue(j) for j in range(eigenvalues.GetNumberOfValues())],
+                    "mesh": fields.GetAbstractArray("LaplaceBeltramiBasisMesh").GetValue(0)}
+        if record["status"] == "ok":
+            write_polydata(center.GetOutput(), map_path)
     record["seconds"] = time.perf_counter() - begin
     record["basis_seconds"] = basis_seconds
     write_json_atomically(record_path, record)
@@ -355,6 +379,24 @@ def pair_key(pair):
     return digest(keys[pair[0]].encode(), keys[pair[1]].encode(), PAIR_PARAMETERS)
 
 
+def attach_basis(data, i):
+    """Puts shape i's stored eigenbasis on its centered map, as vtkLaplaceBeltramiBasis made
+    it (the refinement checks the fingerprint). The functions are mapped copy-on-write from
+    the .npy, not read: the page cache serves every pair and rank that uses them."""
+    functions = numpy_support.numpy_to_vtk(numpy.load(shape_files(i)[2], mmap_mode="c"))
+    functions.SetName("LaplaceBeltramiBasis")
+    data.GetPointData().AddArray(functions)
+    eigenvalues = vtkDoubleArray()
+    eigenvalues.SetName("LaplaceBeltramiEigenvalues")
+    for value in shapes[i]["basis"]["eigenvalues"]:
+        eigenvalues.InsertNextValue(value)
+    mesh = vtkStringArray()
+    mesh.SetName("LaplaceBeltramiBasisMesh")
+    mesh.InsertNextValue(shapes[i]["basis"]["mesh"])
+    data.GetFieldData().AddArray(eigenvalues)
+    data.GetFieldData().AddArray(mesh)
+
+
 def register_pair(p):
     source, target = pairs[p]
     record_path = os.path.join(cache, "pairs", pair_key(pairs[p]) + ".json")
@@ -368,6 +410,9 @@ def register_pair(p):
     errors = Errors()
     source_map = read_polydata(shape_files(source)[1])
     target_map = read_polydata(shape_files(target)[1])
+    if args.refine == "spectral":
+        attach_basis(source_map, source)
+        attach_basis(target_map, target)
     registration = errors.watch(vtkSO3Register())
     registration.SetSourceData(source_map)
     registration.SetTargetData(target_map)
