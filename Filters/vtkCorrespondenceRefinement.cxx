@@ -5,6 +5,7 @@
 #include "ZoomOut.h"
 #include "vtkCorrespondenceOutput.h"
 #include "vtkDistributedInputs.h"
+#include "vtkLaplaceBeltramiBasisData.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkDataArray.h"
@@ -23,6 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 vtkStandardNewMacro(vtkCorrespondenceRefinement);
 
@@ -55,16 +57,11 @@ std::string ExtractMapInput(vtkPolyData* input, int basisSize, MapInput& map)
   {
     error = mobius::vtk::ExtractSurfacePoints(input, map.Surface);
   }
-  if (error.empty() && map.Surface.size() > 0)
+  if (error.empty())
   {
-    // The surface only feeds the spectral surface (a unit-area Laplace-Beltrami basis,
-    // samples), which does not depend on its scale; but lengths enter it squared twice, and
-    // coordinates of 1e-100 or 1e100 underflow or overflow. A power of two scales exactly.
-    const double largest = map.Surface.cwiseAbs().maxCoeff();
-    if (largest > 0.0)
-    {
-      map.Surface *= std::ldexp(1.0, -std::ilogb(largest));
-    }
+    // The spectral surface does not depend on the scale; the basis filter scales the same
+    // way, so that a stored basis has the same fingerprint.
+    mobius::vtk::NormalizeSurfaceScale(map.Surface);
   }
   if (error.empty() && map.Sphere.rows() < 2 * basisSize)
   {
@@ -202,14 +199,42 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       return seconds;
     };
     const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
-    // The two eigenbases are independent (each solve runs on one core): side by side when
-    // there are two threads.
+    // A basis stored on an input (vtkLaplaceBeltramiBasis) is used when it is this
+    // surface's, of BasisSize functions; one of another size is ignored, one of another
+    // surface refused.
     mobius::SpectralSurface surfaces[2];
     std::string errors[2];
     bool prepared[2] = { false, false };
+    bool stored[2] = { false, false };
+    mobius::LaplaceBeltramiBasis bases[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      const mobius::vtk::StoredBasis found = mobius::vtk::ReadBasisArrays(inputs[k],
+        this->BasisSize, mobius::vtk::SurfaceFingerprint(maps[k].Surface, maps[k].Triangles),
+        bases[k], errors[k]);
+      if (!errors[k].empty())
+      {
+        vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << errors[k] << ".");
+        return 0;
+      }
+      stored[k] = found == mobius::vtk::StoredBasis::Found;
+    }
+    // The two surfaces are independent (each eigensolve runs on one core): side by side
+    // when there are two threads.
     mobius::ParallelFor(2, threads, [&](int k, int) {
-      prepared[k] = mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles,
-        this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k]);
+      if (!stored[k])
+      {
+        prepared[k] = mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles,
+          this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k]);
+      }
+      // The mass is cheap to rebuild, and rebuilt exactly as the eigensolver built it.
+      else if (mobius::BuildUnitAreaMassMatrix(
+                 maps[k].Surface, maps[k].Triangles, 0.0, bases[k].Mass, errors[k]))
+      {
+        mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles, std::move(bases[k]),
+          this->NumberOfSamples, surfaces[k]);
+        prepared[k] = true;
+      }
     });
     for (int k = 0; k < 2; ++k)
     {
@@ -313,6 +338,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     locations.Barycentric = dense.Barycentric;
     mobius::vtk::AssembleCorrespondence(
       inputs[0], inputs[1], locations, this->OutputGeometry == TARGET, output);
+    mobius::vtk::RemoveBasisArrays(output);
 
     vtkFieldData* fieldData = output->GetFieldData();
     mobius::vtk::SetFieldValue(fieldData, "RefinementCandidate", bestCandidate);
@@ -327,6 +353,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
     const double seconds[3] = { basisSeconds, candidateSeconds, extensionSeconds };
     mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 3);
+    const double storedBases[2] = { stored[0] ? 1.0 : 0.0, stored[1] ? 1.0 : 0.0 };
+    mobius::vtk::SetFieldValues(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
     mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
   }
   this->UpdateProgress(1.0);

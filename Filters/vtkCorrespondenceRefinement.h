@@ -39,12 +39,22 @@
  *   repaired), `RefinementBasisSize`;
  * - `RefinementStageSeconds` (3 values): eigenbases, candidate search, extension to every
  *   vertex;
+ * - `RefinementStoredBasisUsed` (2 values, source and target): 1 where the input's stored
+ *   basis was used;
  * - `NumberOfThreadsUsed`.
  *
- * Errors: inputs that are not spherical maps with `SurfacePoints`, meshes too small for
- * the basis, a Laplacian that cannot be factorized or an eigensolver that does not converge.
+ * Stored bases: an input carrying the Laplace-Beltrami basis of its surface
+ * (vtkLaplaceBeltramiBasis: point data `LaplaceBeltramiBasis` of BasisSize components, its
+ * eigenvalues and the surface's fingerprint in field data) is refined with it instead of a
+ * newly computed one: the output is the same, bit for bit, without the cost of the
+ * eigensolver. A stored basis of another size is ignored (a new one is computed); one
+ * computed for another surface is an error. These arrays are not passed to the output.
  *
- * @sa vtkSO3Register vtkDenseCorrespondence
+ * Errors: inputs that are not spherical maps with `SurfacePoints`, meshes too small for
+ * the basis, a stored basis of another surface, a Laplacian that cannot be factorized or
+ * an eigensolver that does not converge.
+ *
+ * @sa vtkSO3Register vtkDenseCorrespondence vtkLaplaceBeltramiBasis
  */
 #ifndef vtkCorrespondenceRefinement_h
 #define vtkCorrespondenceRefinement_h

@@ -6,9 +6,12 @@ Usage (K ranks of ParaView's MPI engine, or one process without mpiexec):
         --output RESULTS [--mode all|template|nearest] MESH [MESH ...]
     pvbatch register_collection.py --plugin ... --output RESULTS MESH [MESH ...]
 
-Per shape, once: the conformal map, its Möbius centering and a rotation-invariant descriptor
+Per shape, once: the conformal map, its Möbius centering, a rotation-invariant descriptor
 (the energy of each spherical-harmonic degree of the scale factors, vtkSphericalScaleGrid's
-DegreeEnergies). They are cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
+DegreeEnergies) and, for the spectral refinement, the surface's Laplace-Beltrami eigenbasis
+(vtkLaplaceBeltramiBasis, stored beside the centered map as a .npy file that every pair the
+shape takes part in maps into memory instead of solving the eigenproblem again). They are
+cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
 and of the parameters, so a rerun, or a run with meshes added, redoes only what is new; pair
 results are cached the same way. Ranks take shapes, then pairs, one at a time from a shared
 counter (dynamic balancing: large meshes do not hold the others up); each rank runs the
@@ -118,16 +121,23 @@ threads = args.threads if args.threads > 0 else share_of_cores()
 threads_per_rank = comm.allgather(threads) if comm else [threads]
 
 from mobiusregistration import (  # noqa: E402
-    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register,
-    vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
-from vtkmodules.vtkCommonCore import vtkCommand, vtkLookupTable, vtkUnsignedCharArray  # noqa: E402
+    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkLaplaceBeltramiBasis, vtkMobiusCenter,
+    vtkSO3Register, vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
+from vtkmodules.util import numpy_support  # noqa: E402
+from vtkmodules.vtkCommonCore import (  # noqa: E402
+    vtkCommand, vtkDoubleArray, vtkLookupTable, vtkStringArray, vtkUnsignedCharArray)
 from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter  # noqa: E402
 
 # What a cached result depends on besides the mesh (bump the version when the computation
 # changes so that old caches are not reused).
-SHAPE_PARAMETERS = {"version": 1, "descriptor_resolution": 64}
+# The refinement's eigenbasis: its size (the refinement's BasisSize) and the kind of basis
+# (vtkLaplaceBeltramiBasis's; the refinement refuses a stored basis of another kind anyway).
+BASIS_SIZE = 80
+SHAPE_PARAMETERS = {"version": 2, "descriptor_resolution": 64,
+                    "basis": {"size": BASIS_SIZE, "kind": "intrinsic Delaunay, lumped mass, v1"}
+                    if args.refine == "spectral" else None}
 PAIR_PARAMETERS = {"version": 1, "resolution": args.resolution, "refine": args.refine}
 DESCRIPTOR_DEGREES = 16
 
@@ -180,6 +190,12 @@ def write_polydata(data, path):
     writer.SetFileName(partial)
     if writer.Write() != 1:
         raise OSError(f"cannot write {path}")
+    os.replace(partial, path)
+
+
+def write_array(array, path):
+    partial = f"{path}.{rank}.partial.npy"
+    numpy.save(partial, array)
     os.replace(partial, path)
 
 
@@ -257,16 +273,21 @@ keys = comm.bcast(keys, root=0) if comm else keys
 
 
 def shape_files(i):
+    """The shape's record, centered map and eigenbasis (n x BASIS_SIZE doubles, row-major).
+    The basis is not in the map's VTP: VTK's binary XML is base64, and decoding 11 MB of
+    eigenfunctions for a 17,000-vertex mesh took longer than computing them (measured),
+    while a .npy is mapped into memory."""
     base = os.path.join(cache, "shapes", keys[i])
-    return base + ".json", base + ".vtp"
+    return base + ".json", base + ".vtp", base + ".basis.npy"
 
 
 def map_shape(i):
-    record_path, map_path = shape_files(i)
+    record_path, map_path, basis_path = shape_files(i)
     if os.path.isfile(record_path):
         with open(record_path) as f:
             record = json.load(f)
-        if record["status"] != "ok" or os.path.isfile(map_path):
+        if record["status"] != "ok" or (os.path.isfile(map_path) and
+                                        (not SHAPE_PARAMETERS["basis"] or os.path.isfile(basis_path))):
             record["cached"] = True
             return record
     begin = time.perf_counter()
@@ -284,6 +305,7 @@ def map_shape(i):
     grid.Update()
     record = {"status": "failed", "error": "", "vertices": 0, "energies": [], "rank": rank}
     mapped = conformal.GetOutput()
+    basis_seconds = 0.0
     if errors.messages or center.GetOutput().GetNumberOfPoints() == 0:
         record["error"] = "; ".join(errors.messages) or "no output"
     elif field_value(mapped, "DegenerateMap") == 1:
@@ -295,8 +317,28 @@ def map_shape(i):
         energies = grid.GetOutput().GetFieldData().GetArray("DegreeEnergies")
         record.update(status="ok", vertices=center.GetOutput().GetNumberOfPoints(),
                       energies=[energies.GetValue(l) for l in range(min(DESCRIPTOR_DEGREES, energies.GetNumberOfValues()))])
-        write_polydata(center.GetOutput(), map_path)
+        if SHAPE_PARAMETERS["basis"]:
+            basis_begin = time.perf_counter()
+            basis = errors.watch(vtkLaplaceBeltramiBasis())
+            basis.SetInputConnection(center.GetOutputPort())
+            basis.SetBasisSize(BASIS_SIZE)
+            basis.Update()
+            basis_seconds = time.perf_counter() - basis_begin
+            if errors.messages:
+                record.update(status="failed", error="; ".join(errors.messages))
+            else:
+                fields = basis.GetOutput().GetFieldData()
+                write_array(numpy_support.vtk_to_numpy(
+                    basis.GetOutput().GetPointData().GetArray("LaplaceBeltramiBasis")), basis_path)
+                eigenvalues = fields.GetArray("LaplaceBeltramiEigenvalues")
+                # Python's float repr round-trips: the eigenvalues come back to the last bit.
+                record["basis"] = {
+                    "eigenvalues": [eigenvalues.GetValue(j) for j in range(eigenvalues.GetNumberOfValues())],
+                    "mesh": fields.GetAbstractArray("LaplaceBeltramiBasisMesh").GetValue(0)}
+        if record["status"] == "ok":
+            write_polydata(center.GetOutput(), map_path)
     record["seconds"] = time.perf_counter() - begin
+    record["basis_seconds"] = basis_seconds
     write_json_atomically(record_path, record)
     record["cached"] = False
     return record
@@ -337,6 +379,24 @@ def pair_key(pair):
     return digest(keys[pair[0]].encode(), keys[pair[1]].encode(), PAIR_PARAMETERS)
 
 
+def attach_basis(data, i):
+    """Puts shape i's stored eigenbasis on its centered map, as vtkLaplaceBeltramiBasis made
+    it (the refinement checks the fingerprint). The functions are mapped copy-on-write from
+    the .npy, not read: the page cache serves every pair and rank that uses them."""
+    functions = numpy_support.numpy_to_vtk(numpy.load(shape_files(i)[2], mmap_mode="c"))
+    functions.SetName("LaplaceBeltramiBasis")
+    data.GetPointData().AddArray(functions)
+    eigenvalues = vtkDoubleArray()
+    eigenvalues.SetName("LaplaceBeltramiEigenvalues")
+    for value in shapes[i]["basis"]["eigenvalues"]:
+        eigenvalues.InsertNextValue(value)
+    mesh = vtkStringArray()
+    mesh.SetName("LaplaceBeltramiBasisMesh")
+    mesh.InsertNextValue(shapes[i]["basis"]["mesh"])
+    data.GetFieldData().AddArray(eigenvalues)
+    data.GetFieldData().AddArray(mesh)
+
+
 def register_pair(p):
     source, target = pairs[p]
     record_path = os.path.join(cache, "pairs", pair_key(pairs[p]) + ".json")
@@ -350,6 +410,9 @@ def register_pair(p):
     errors = Errors()
     source_map = read_polydata(shape_files(source)[1])
     target_map = read_polydata(shape_files(target)[1])
+    if args.refine == "spectral":
+        attach_basis(source_map, source)
+        attach_basis(target_map, target)
     registration = errors.watch(vtkSO3Register())
     registration.SetSourceData(source_map)
     registration.SetTargetData(target_map)
@@ -358,6 +421,8 @@ def register_pair(p):
     correspondence = errors.watch(vtkCorrespondenceRefinement() if args.refine == "spectral"
                                   else vtkDenseCorrespondence())
     correspondence.SetNumberOfThreads(threads)
+    if args.refine == "spectral":
+        correspondence.SetBasisSize(BASIS_SIZE)  # the stored bases' size: they are used
     correspondence.SetSourceConnection(registration.GetOutputPort())
     correspondence.SetTargetData(target_map)
     correspondence.Update()
@@ -376,6 +441,7 @@ def register_pair(p):
             correlation_coefficient=rho,
             registration_error=field_value(fields, "RegistrationError"),
             orthogonality_residual=field_value(result, "RefinementOrthogonalityResidual"),
+            stored_bases=int(sum(field_value(result, "RefinementStoredBasisUsed", k) == 1 for k in range(2))),
             distance=math.sqrt(max(0.0, (1.0 - rho) / 2.0)))
         if args.write_maps:
             write_polydata(result, map_path)
@@ -516,6 +582,8 @@ if rank == 0:
         "pairs": len(pairs), "pairs_failed": pair_failures,
         "pairs_computed": sum(1 for r in results.values() if not r["cached"]),
         "shape_seconds": sum(s["seconds"] for s in shapes.values() if not s["cached"]),
+        "basis_seconds": sum(s.get("basis_seconds", 0.0) for s in shapes.values() if not s["cached"]),
+        "pairs_with_stored_bases": sum(1 for r in results.values() if not r["cached"] and r.get("stored_bases") == 2),
         "pair_seconds": sum(r["seconds"] for r in results.values() if not r["cached"]),
     }
     write_json_atomically(os.path.join(args.output, "run.json"), summary)

@@ -1,7 +1,9 @@
 """Test of register_collection.py: the same pairs, to the last digit, on 2 MPI ranks (one thread
 each) as on one process (a thread per core), the threads of each rank in run.json, a failing
-mesh recorded without stopping the others, the cache (a rerun computes nothing; a byte-identical
-copy is recognized; a new mesh computes only itself and its pairs), and the nearest mode.
+mesh recorded without stopping the others, the cache (a rerun computes nothing; pairs refined
+again from cached shapes, with their stored eigenbases, come out as in the cold run; a
+byte-identical copy is recognized; a new mesh computes only itself and its pairs), and the
+nearest mode.
 
 Usage: python3 test_register_collection.py MPIEXEC PVBATCH PLUGIN DRIVER MESH_DIR SCRATCH
 """
@@ -94,6 +96,9 @@ cores = len(os.sched_getaffinity(0))
 threads = run_summary(parallel)["threads_per_rank"]
 check(len(threads) == 2 and all(1 <= t <= max(1, cores // 2) for t in threads),
       f"two ranks, each with its share of the {cores} cores: {threads}")
+summary = run_summary(parallel)
+check(summary["pairs_with_stored_bases"] == 3 and summary["basis_seconds"] > 0,
+      f"each shape's eigenbasis computed once, in the shape step, and used by its pairs: {summary}")
 
 # 2. One process (pvbatch without MPI): the same pairs.
 serial = os.path.join(scratch, "one-process")
@@ -107,6 +112,15 @@ summary = run_summary(parallel)
 check(done.returncode == 0, "rerun succeeds with --max-failures 1")
 check(summary["shapes_computed"] == 0 and summary["pairs_computed"] == 0, f"rerun from the cache: {summary}")
 check(same_pairs(pairs, table(os.path.join(parallel, "pairs.csv"))), "cached pairs unchanged")
+
+# 3b. The pairs refined again, from the cached shapes and their stored eigenbases: the table of
+#     the cold run, to the last digit.
+shutil.rmtree(os.path.join(parallel, "cache", "pairs"))
+run(1, parallel, "--max-failures", "1")
+summary = run_summary(parallel)
+check(summary["shapes_computed"] == 0 and summary["pairs_computed"] == 3 and
+      summary["pairs_with_stored_bases"] == 3, f"pairs recomputed from cached shapes: {summary}")
+check(same_pairs(pairs, table(os.path.join(parallel, "pairs.csv"))), "cached shapes give the cold run's pairs")
 
 # 4. A byte-identical copy under another name comes from the cache; a turned copy of the hand
 #    (new bytes) is computed with its pairs only, and is the hand's nearest shape.

@@ -200,6 +200,38 @@ bool RayleighRitz(const SparseMatrix& stiffness, const MassRoot& root,
 }
 }
 
+bool BuildUnitAreaMassMatrix(const Points& points, const Triangles& triangles,
+  double consistentMassShare, SparseMatrix& mass, std::string& error)
+{
+  const Index n = points.rows();
+  // Lumped by default. A consistent share uses the intrinsic Delaunay triangulation, the
+  // one the stiffness is built on (the same function space): the lumped mass alone puts the
+  // high eigenvalues of a coarse mesh too low (the 80th of CGAL's cow 5.4% below that of
+  // its midpoint subdivision), the consistent one too high (5.8% above), a half-half blend
+  // leaves them 0.3% apart. With the consistent mass on the original triangles instead, the
+  // cow mapped onto its rotated copy came out as its mirror image (measured).
+  if (!BuildMassMatrix(points, triangles, consistentMassShare > 0, consistentMassShare, mass))
+  {
+    error = "the mesh has non-manifold or inconsistently oriented edges";
+    return false;
+  }
+  // Unit total area: eigenvalues and coefficients of two surfaces are then comparable.
+  const Vector lumped = mass * Vector::Ones(n); // row sums: each vertex's area
+  const double area = lumped.sum();
+  if (!(area > 0) || !std::isfinite(area))
+  {
+    error = "the surface has no area";
+    return false;
+  }
+  mass /= area;
+  if (lumped.minCoeff() <= 0)
+  {
+    error = "a vertex has no area (it belongs only to degenerate triangles)";
+    return false;
+  }
+  return true;
+}
+
 bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangles, int count,
   LaplaceBeltramiBasis& basis, std::string& error, double consistentMassShare)
 {
@@ -217,29 +249,8 @@ bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangle
     error = info.Error;
     return false;
   }
-  // Lumped by default. A consistent share uses the intrinsic Delaunay triangulation, the
-  // one the stiffness is built on (the same function space): the lumped mass alone puts the
-  // high eigenvalues of a coarse mesh too low (the 80th of CGAL's cow 5.4% below that of
-  // its midpoint subdivision), the consistent one too high (5.8% above), a half-half blend
-  // leaves them 0.3% apart. With the consistent mass on the original triangles instead, the
-  // cow mapped onto its rotated copy came out as its mirror image (measured).
-  if (!BuildMassMatrix(points, triangles, consistentMassShare > 0, consistentMassShare, basis.Mass))
+  if (!BuildUnitAreaMassMatrix(points, triangles, consistentMassShare, basis.Mass, error))
   {
-    error = "the mesh has non-manifold or inconsistently oriented edges";
-    return false;
-  }
-  // Unit total area: eigenvalues and coefficients of two surfaces are then comparable.
-  const Vector lumped = basis.Mass * Vector::Ones(n); // row sums: each vertex's area
-  const double area = lumped.sum();
-  if (!(area > 0) || !std::isfinite(area))
-  {
-    error = "the surface has no area";
-    return false;
-  }
-  basis.Mass /= area;
-  if (lumped.minCoeff() <= 0)
-  {
-    error = "a vertex has no area (it belongs only to degenerate triangles)";
     return false;
   }
 

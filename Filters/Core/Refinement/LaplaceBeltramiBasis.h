@@ -36,6 +36,13 @@ struct LaplaceBeltramiBasis
 /// set if the Laplacian cannot be built or the eigensolver does not converge.
 bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangles, int count,
   LaplaceBeltramiBasis& basis, std::string& error, double consistentMassShare = 0.0);
+
+/// The mass matrix ComputeLaplaceBeltramiBasis solves with (the same `consistentMassShare`),
+/// scaled to unit total area. With eigenfunctions and eigenvalues computed earlier (and
+/// stored), it completes a LaplaceBeltramiBasis for a fraction of the cost. False with
+/// `error` set on non-manifold or inconsistently oriented edges, or a vertex without area.
+bool BuildUnitAreaMassMatrix(const Points& points, const Triangles& triangles,
+  double consistentMassShare, SparseMatrix& mass, std::string& error);
 }
 
 #endif

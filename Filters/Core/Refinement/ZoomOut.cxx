@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace mobius
 {
@@ -94,6 +95,13 @@ bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, in
   {
     return false;
   }
+  PrepareSpectralSurface(points, triangles, std::move(basis), sampleCount, surface);
+  return true;
+}
+
+void PrepareSpectralSurface(const Points& points, const Triangles& triangles,
+  LaplaceBeltramiBasis basis, Index sampleCount, SpectralSurface& surface)
+{
   surface.Positions = points;
   surface.Normals = Points::Zero(points.rows(), 3);
   for (Index t = 0; t < triangles.rows(); ++t)
@@ -109,8 +117,8 @@ bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, in
   surface.Normals.rowwise().normalize();
   surface.Faces = triangles;
   surface.Embedding = basis.Functions;
-  surface.Eigenvalues = basis.Eigenvalues;
-  surface.Mass = basis.Mass;
+  surface.Eigenvalues = std::move(basis.Eigenvalues);
+  surface.Mass = std::move(basis.Mass);
   surface.Neighbors = VertexNeighbors(points.rows(), triangles);
   surface.Corners = VertexTriangles(points.rows(), triangles);
   surface.Samples = FarthestPointSamples(points, sampleCount);
@@ -133,7 +141,6 @@ bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, in
       surface.SampleTriangles.push_back(labels);
     }
   }
-  return true;
 }
 
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,

@@ -46,6 +46,11 @@ struct SpectralSurface
 bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, int basisSize,
   Index sampleCount, SpectralSurface& surface, std::string& error);
 
+/// The same from an eigenbasis computed earlier (ComputeLaplaceBeltramiBasis on these points
+/// and triangles): the surface is then identical, bit for bit, to PrepareSpectralSurface's.
+void PrepareSpectralSurface(const Points& points, const Triangles& triangles,
+  LaplaceBeltramiBasis basis, Index sampleCount, SpectralSurface& surface);
+
 struct ZoomOutParameters
 {
   /// Basis size of the first iteration. Small: a few smooth functions are all a start with

@@ -1,0 +1,85 @@
+#include "vtkLaplaceBeltramiBasis.h"
+
+#include "LaplaceBeltramiBasis.h"
+#include "vtkDistributedInputs.h"
+#include "vtkLaplaceBeltramiBasisData.h"
+#include "vtkSphericalMapData.h"
+
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+vtkStandardNewMacro(vtkLaplaceBeltramiBasis);
+
+//------------------------------------------------------------------------------
+int vtkLaplaceBeltramiBasis::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The basis is global: the whole surface, also when ParaView splits it over ranks (the
+  // result then lives on rank 0); an empty input gives an empty output.
+  return mobius::vtk::RequestDataOnWholeInputs(
+    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
+      return this->ComputeOutput(request, wholeInputs, outputVector);
+    });
+}
+
+//------------------------------------------------------------------------------
+int vtkLaplaceBeltramiBasis::ComputeOutput(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "Missing input or output polydata.");
+    return 0;
+  }
+  // The surface exactly as vtkCorrespondenceRefinement reads it, so that the fingerprints
+  // agree and the basis is the one it would compute.
+  mobius::Points surface;
+  mobius::Triangles triangles;
+  const bool isMap =
+    input->GetPointData()->GetArray(mobius::vtk::SurfacePointsArrayName) != nullptr;
+  std::string error = isMap ? mobius::vtk::ExtractSurfacePoints(input, surface)
+                            : mobius::vtk::ExtractPoints(input, surface);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractTriangles(input, triangles);
+  }
+  if (error.empty() && triangles.rows() == 0)
+  {
+    error = "it has no triangles";
+  }
+  if (error.empty() && surface.rows() <= this->BasisSize)
+  {
+    error = "it has " + std::to_string(surface.rows()) + " points; a basis of " +
+      std::to_string(this->BasisSize) + " functions needs more";
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot compute the Laplace-Beltrami basis of the input: " << error << ".");
+    return 0;
+  }
+  mobius::vtk::NormalizeSurfaceScale(surface);
+  this->UpdateProgress(0.05);
+
+  mobius::LaplaceBeltramiBasis basis;
+  if (!mobius::ComputeLaplaceBeltramiBasis(surface, triangles, this->BasisSize, basis, error))
+  {
+    vtkErrorMacro(<< "Cannot compute the Laplace-Beltrami basis of the input: " << error << ".");
+    return 0;
+  }
+  output->ShallowCopy(input);
+  mobius::vtk::AddBasisArrays(output, basis, mobius::vtk::SurfaceFingerprint(surface, triangles));
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLaplaceBeltramiBasis::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "BasisSize: " << this->BasisSize << "\n";
+}
