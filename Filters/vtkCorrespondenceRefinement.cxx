@@ -209,7 +209,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     bool prepared[2] = { false, false };
     mobius::ParallelFor(2, threads, [&](int k, int) {
       prepared[k] = mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles,
-        this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k]);
+        this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k], this->ConsistentMassShare);
     });
     for (int k = 0; k < 2; ++k)
     {
@@ -259,9 +259,11 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     mobius::ZoomOutParameters oneThread = parameters;
     oneThread.NumberOfThreads = 1;
     mobius::ParallelFor(static_cast<int>(starts.size()), threads, [&](int c, int) {
+        mobius::ZoomOutParameters own = oneThread;
+        own.Orientation = this->RepairOrientation ? (determinants[c] > 0 ? 1 : -1) : 0;
         screened[c] = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
           StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
-          oneThread);
+          own);
       });
     this->UpdateProgress(0.7);
     if (this->GetAbortExecute())
@@ -299,6 +301,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     {
       parameters.StartSize = mobius::NextBasisSize(parameters.FinalSize, parameters.Growth);
       parameters.FinalSize = this->BasisSize;
+      parameters.Orientation = this->RepairOrientation ? (preserve ? 1 : -1) : 0;
       best = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], best.TargetVertex, parameters);
     }
     const double candidateSeconds = lap();
@@ -344,6 +347,8 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "FullResolutionIterations: " << this->FullResolutionIterations << "\n";
   os << indent << "SearchCandidates: " << this->SearchCandidates << "\n";
+  os << indent << "RepairOrientation: " << this->RepairOrientation << "\n";
+  os << indent << "ConsistentMassShare: " << this->ConsistentMassShare << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -87,10 +87,10 @@ double OrthogonalityResidual(const Eigen::MatrixXd& functionalMap)
 }
 
 bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, int basisSize,
-  Index sampleCount, SpectralSurface& surface, std::string& error)
+  Index sampleCount, SpectralSurface& surface, std::string& error, double consistentMassShare)
 {
   LaplaceBeltramiBasis basis;
-  if (!ComputeLaplaceBeltramiBasis(points, triangles, basisSize, basis, error))
+  if (!ComputeLaplaceBeltramiBasis(points, triangles, basisSize, basis, error, consistentMassShare))
   {
     return false;
   }
@@ -136,6 +136,54 @@ bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, in
   return true;
 }
 
+namespace
+{
+// Share of a sample map's triangles on the side parameters.Orientation expects.
+double ExpectedSideShare(const SpectralSurface& source, const SpectralSurface& target,
+  const std::vector<Index>& targetVertex, int orientation)
+{
+  const double agreement = OrientationAgreement(source, target, targetVertex);
+  return orientation > 0 ? agreement : 1.0 - agreement;
+}
+
+// One ZoomOut iteration's map came out as `targetVertex` from the functional map `c`: if it
+// is decisively of the wrong orientation, the sign of one eigenfunction is wrong (the mirror
+// symmetry negates the antisymmetric ones, and at the first of them the fit is a coin
+// flip); redo the nearest-row search with each non-constant row of c negated in turn and
+// keep the best-oriented map if it is decisively of the right orientation.
+void KeepOrientation(const SpectralSurface& source, const SpectralSurface& target,
+  const RowMatrix& sourceRows, const RowMatrix& targetRows, const Eigen::MatrixXd& c,
+  const ZoomOutParameters& parameters, std::vector<Index>& targetVertex)
+{
+  if (ExpectedSideShare(source, target, targetVertex, parameters.Orientation) >
+    kOrientationDecided)
+  {
+    return;
+  }
+  const int k = static_cast<int>(c.rows());
+  const RowMatrix a = sourceRows.leftCols(k);
+  double bestShare = 1.0 - kOrientationDecided;
+  for (int row = 1; row < k; ++row) // row 0 is the constant function
+  {
+    Eigen::MatrixXd flipped = c;
+    flipped.row(row) *= -1;
+    const std::vector<Index> nearest =
+      NearestRows(a, targetRows.leftCols(k) * flipped.transpose(), parameters.NumberOfThreads);
+    std::vector<Index> map(nearest.size());
+    for (size_t i = 0; i < nearest.size(); ++i)
+    {
+      map[i] = target.Samples[nearest[i]];
+    }
+    const double share = ExpectedSideShare(source, target, map, parameters.Orientation);
+    if (share >= bestShare)
+    {
+      bestShare = share;
+      targetVertex = std::move(map);
+    }
+  }
+}
+}
+
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters)
 {
@@ -161,6 +209,10 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     for (size_t i = 0; i < nearest.size(); ++i)
     {
       result.TargetVertex[i] = target.Samples[nearest[i]];
+    }
+    if (parameters.Orientation != 0)
+    {
+      KeepOrientation(source, target, sourceRows, targetRows, c, parameters, result.TargetVertex);
     }
     if (k == finalSize)
     {
