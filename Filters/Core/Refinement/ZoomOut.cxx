@@ -150,20 +150,22 @@ double ExpectedSideShare(const SpectralSurface& source, const SpectralSurface& t
 // is decisively of the wrong orientation, the sign of one eigenfunction is wrong (the mirror
 // symmetry negates the antisymmetric ones, and at the first of them the fit is a coin
 // flip); redo the nearest-row search with each non-constant row of c negated in turn and
-// keep the best-oriented map if it is decisively of the right orientation.
-void KeepOrientation(const SpectralSurface& source, const SpectralSurface& target,
+// keep the best-oriented map if it is decisively of the right orientation. Only the first
+// kOrientationRows rows are tried: the sign that decides the orientation is that of the
+// first antisymmetric function, which enters early. True if it tried.
+bool KeepOrientation(const SpectralSurface& source, const SpectralSurface& target,
   const RowMatrix& sourceRows, const RowMatrix& targetRows, const Eigen::MatrixXd& c,
   const ZoomOutParameters& parameters, std::vector<Index>& targetVertex)
 {
   if (ExpectedSideShare(source, target, targetVertex, parameters.Orientation) >
     kOrientationDecided)
   {
-    return;
+    return false;
   }
   const int k = static_cast<int>(c.rows());
   const RowMatrix a = sourceRows.leftCols(k);
   double bestShare = 1.0 - kOrientationDecided;
-  for (int row = 1; row < k; ++row) // row 0 is the constant function
+  for (int row = 1; row < std::min(k, kOrientationRows + 1); ++row) // row 0: the constant
   {
     Eigen::MatrixXd flipped = c;
     flipped.row(row) *= -1;
@@ -181,6 +183,7 @@ void KeepOrientation(const SpectralSurface& source, const SpectralSurface& targe
       targetVertex = std::move(map);
     }
   }
+  return true;
 }
 }
 
@@ -195,6 +198,7 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
 
   SampleMap result;
   result.TargetVertex = initialTargetVertex;
+  int orientationTries = 0;
   for (int k = std::min(parameters.StartSize, finalSize);;
        k = std::min(NextBasisSize(k, parameters.Growth), finalSize))
   {
@@ -210,9 +214,14 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     {
       result.TargetVertex[i] = target.Samples[nearest[i]];
     }
-    if (parameters.Orientation != 0)
+    // A map that stays mirrored after a few tries (a shape with no mirror symmetry mapped
+    // badly, or a flip that needs more than one sign) is left to RepairOrientation and the
+    // candidate choice: retrying at every iteration tripled the candidate search on CGAL's
+    // man, one of whose candidates stays mirrored.
+    if (parameters.Orientation != 0 && orientationTries < kOrientationTries &&
+      KeepOrientation(source, target, sourceRows, targetRows, c, parameters, result.TargetVertex))
     {
-      KeepOrientation(source, target, sourceRows, targetRows, c, parameters, result.TargetVertex);
+      ++orientationTries;
     }
     if (k == finalSize)
     {

@@ -92,8 +92,9 @@ struct SampleMap
 /// or its mirror image) ZoomOut converges to is decided by noise. With
 /// `parameters.Orientation` set, an iteration whose map has at most
 /// `kOrientationDecided` of its sample triangles on the expected side is redone with each
-/// non-constant row of its functional map negated in turn, and the best-oriented result is
-/// kept if at least 1 - kOrientationDecided of its triangles are on the expected side.
+/// of the first kOrientationRows non-constant rows of its functional map negated in turn,
+/// and the best-oriented result is kept if at least 1 - kOrientationDecided of its
+/// triangles are on the expected side (at most kOrientationTries iterations per run).
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters);
 
@@ -117,6 +118,11 @@ SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface
 /// calls an iteration's map decisively of the wrong orientation (a scrambled map, before
 /// any antisymmetric eigenfunction is in the basis, has about one half).
 constexpr double kOrientationDecided = 0.25;
+/// How many iterations of one ZoomOutOnSamples run may retry with a sign flipped, and
+/// among how many of the first non-constant eigenfunctions (each try costs one
+/// nearest-row search per function).
+constexpr int kOrientationTries = 3;
+constexpr int kOrientationRows = 10;
 
 /// True when a sample map has the orientation it should have: agreement above one half for
 /// an orientation-preserving map, below for an orientation-reversing one.
