@@ -217,7 +217,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
         vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << errors[k] << ".");
         return 0;
       }
-      stored[k] = found == mobius::vtk::StoredBasis::Found;
+      // A stored basis is built with the lumped mass; a blended mass needs its own basis.
+      stored[k] = found == mobius::vtk::StoredBasis::Found && this->ConsistentMassShare == 0.0;
     }
     // The two surfaces are independent (each eigensolve runs on one core): side by side
     // when there are two threads.
@@ -225,7 +226,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       if (!stored[k])
       {
         prepared[k] = mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles,
-          this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k]);
+          this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k], this->ConsistentMassShare);
       }
       // The mass is cheap to rebuild, and rebuilt exactly as the eigensolver built it.
       else if (mobius::BuildUnitAreaMassMatrix(
@@ -284,9 +285,11 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     mobius::ZoomOutParameters oneThread = parameters;
     oneThread.NumberOfThreads = 1;
     mobius::ParallelFor(static_cast<int>(starts.size()), threads, [&](int c, int) {
+        mobius::ZoomOutParameters own = oneThread;
+        own.Orientation = this->RepairOrientation ? (determinants[c] > 0 ? 1 : -1) : 0;
         screened[c] = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
           StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
-          oneThread);
+          own);
       });
     this->UpdateProgress(0.7);
     if (this->GetAbortExecute())
@@ -324,6 +327,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     {
       parameters.StartSize = mobius::NextBasisSize(parameters.FinalSize, parameters.Growth);
       parameters.FinalSize = this->BasisSize;
+      parameters.Orientation = this->RepairOrientation ? (preserve ? 1 : -1) : 0;
       best = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], best.TargetVertex, parameters);
     }
     const double candidateSeconds = lap();
@@ -372,6 +376,8 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfSamples: " << this->NumberOfSamples << "\n";
   os << indent << "FullResolutionIterations: " << this->FullResolutionIterations << "\n";
   os << indent << "SearchCandidates: " << this->SearchCandidates << "\n";
+  os << indent << "RepairOrientation: " << this->RepairOrientation << "\n";
+  os << indent << "ConsistentMassShare: " << this->ConsistentMassShare << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -141,15 +141,30 @@ public:
 
   ///@{
   /**
-   * When the refined map reverses orientation although the transform it started from is a
-   * rotation (or preserves it although it is a reflection), as happens when a bilaterally
-   * symmetric shape is mapped onto the target's mirror image, retry ZoomOut with the sign of
-   * one or two low-frequency eigenfunctions flipped (the mirror symmetry negates the
-   * antisymmetric ones) and keep the best map of the right orientation. Default on.
+   * Keep the map's orientation that of the transform it started from: preserved for a
+   * rotation, reversed for a reflection. A bilaterally symmetric shape can otherwise come
+   * out mapped onto the target's mirror image: its first eigenfunctions are all symmetric,
+   * so the first ZoomOut iterations scramble left and right, and the first antisymmetric
+   * one enters with a sign that is a coin flip. With this on (default), a ZoomOut iteration
+   * whose map comes out decisively of the wrong orientation (at most a quarter of the
+   * sampled triangles on the expected side) is redone with the sign of one eigenfunction
+   * flipped (the mirror symmetry negates the antisymmetric ones), and if the kept
+   * candidate still has the wrong orientation, ZoomOut is retried from its low-frequency
+   * functional map with one or two signs flipped and the best map of the right
+   * orientation kept.
    */
   vtkSetMacro(RepairOrientation, bool);
   vtkGetMacro(RepairOrientation, bool);
   vtkBooleanMacro(RepairOrientation, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Share of the consistent (finite-element) mass matrix blended with the lumped one in the
+   * Laplace-Beltrami eigenproblem, 0..1 (0: lumped). See the README's Accuracy section.
+   */
+  vtkSetClampMacro(ConsistentMassShare, double, 0.0, 1.0);
+  vtkGetMacro(ConsistentMassShare, double);
   ///@}
 
   ///@{
@@ -191,6 +206,7 @@ protected:
   int FullResolutionIterations = 2;
   bool SearchCandidates = true;
   bool RepairOrientation = true;
+  double ConsistentMassShare = 0.0;
   int OutputGeometry = TARGET;
   int NumberOfThreads = 0;
 

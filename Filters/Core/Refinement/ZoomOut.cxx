@@ -88,10 +88,10 @@ double OrthogonalityResidual(const Eigen::MatrixXd& functionalMap)
 }
 
 bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, int basisSize,
-  Index sampleCount, SpectralSurface& surface, std::string& error)
+  Index sampleCount, SpectralSurface& surface, std::string& error, double consistentMassShare)
 {
   LaplaceBeltramiBasis basis;
-  if (!ComputeLaplaceBeltramiBasis(points, triangles, basisSize, basis, error))
+  if (!ComputeLaplaceBeltramiBasis(points, triangles, basisSize, basis, error, consistentMassShare))
   {
     return false;
   }
@@ -143,6 +143,57 @@ void PrepareSpectralSurface(const Points& points, const Triangles& triangles,
   }
 }
 
+namespace
+{
+// Share of a sample map's triangles on the side parameters.Orientation expects.
+double ExpectedSideShare(const SpectralSurface& source, const SpectralSurface& target,
+  const std::vector<Index>& targetVertex, int orientation)
+{
+  const double agreement = OrientationAgreement(source, target, targetVertex);
+  return orientation > 0 ? agreement : 1.0 - agreement;
+}
+
+// One ZoomOut iteration's map came out as `targetVertex` from the functional map `c`: if it
+// is decisively of the wrong orientation, the sign of one eigenfunction is wrong (the mirror
+// symmetry negates the antisymmetric ones, and at the first of them the fit is a coin
+// flip); redo the nearest-row search with each non-constant row of c negated in turn and
+// keep the best-oriented map if it is decisively of the right orientation. Only the first
+// kOrientationRows rows are tried: the sign that decides the orientation is that of the
+// first antisymmetric function, which enters early. True if it tried.
+bool KeepOrientation(const SpectralSurface& source, const SpectralSurface& target,
+  const RowMatrix& sourceRows, const RowMatrix& targetRows, const Eigen::MatrixXd& c,
+  const ZoomOutParameters& parameters, std::vector<Index>& targetVertex)
+{
+  if (ExpectedSideShare(source, target, targetVertex, parameters.Orientation) >
+    kOrientationDecided)
+  {
+    return false;
+  }
+  const int k = static_cast<int>(c.rows());
+  const RowMatrix a = sourceRows.leftCols(k);
+  double bestShare = 1.0 - kOrientationDecided;
+  for (int row = 1; row < std::min(k, kOrientationRows + 1); ++row) // row 0: the constant
+  {
+    Eigen::MatrixXd flipped = c;
+    flipped.row(row) *= -1;
+    const std::vector<Index> nearest =
+      NearestRows(a, targetRows.leftCols(k) * flipped.transpose(), parameters.NumberOfThreads);
+    std::vector<Index> map(nearest.size());
+    for (size_t i = 0; i < nearest.size(); ++i)
+    {
+      map[i] = target.Samples[nearest[i]];
+    }
+    const double share = ExpectedSideShare(source, target, map, parameters.Orientation);
+    if (share >= bestShare)
+    {
+      bestShare = share;
+      targetVertex = std::move(map);
+    }
+  }
+  return true;
+}
+}
+
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters)
 {
@@ -154,6 +205,7 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
 
   SampleMap result;
   result.TargetVertex = initialTargetVertex;
+  int orientationTries = 0;
   for (int k = std::min(parameters.StartSize, finalSize);;
        k = std::min(NextBasisSize(k, parameters.Growth), finalSize))
   {
@@ -168,6 +220,15 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     for (size_t i = 0; i < nearest.size(); ++i)
     {
       result.TargetVertex[i] = target.Samples[nearest[i]];
+    }
+    // A map that stays mirrored after a few tries (a shape with no mirror symmetry mapped
+    // badly, or a flip that needs more than one sign) is left to RepairOrientation and the
+    // candidate choice: retrying at every iteration tripled the candidate search on CGAL's
+    // man, one of whose candidates stays mirrored.
+    if (parameters.Orientation != 0 && orientationTries < kOrientationTries &&
+      KeepOrientation(source, target, sourceRows, targetRows, c, parameters, result.TargetVertex))
+    {
+      ++orientationTries;
     }
     if (k == finalSize)
     {

@@ -42,9 +42,11 @@ struct SpectralSurface
 };
 
 /// Eigenbasis of `basisSize` functions, adjacency and `sampleCount` samples of a closed
-/// manifold triangle mesh. False with `error` set if the eigenbasis cannot be computed.
+/// manifold triangle mesh; `consistentMassShare` is the eigenproblem's mass option
+/// (ComputeLaplaceBeltramiBasis). False with `error` set if the eigenbasis cannot be computed.
 bool PrepareSpectralSurface(const Points& points, const Triangles& triangles, int basisSize,
-  Index sampleCount, SpectralSurface& surface, std::string& error);
+  Index sampleCount, SpectralSurface& surface, std::string& error,
+  double consistentMassShare = 0.0);
 
 /// The same from an eigenbasis computed earlier (ComputeLaplaceBeltramiBasis on these points
 /// and triangles): the surface is then identical, bit for bit, to PrepareSpectralSurface's.
@@ -61,6 +63,11 @@ struct ZoomOutParameters
   int FinalSize = 80;  ///< basis size of the last (at most the surfaces' basis size)
   double Growth = 0.15; ///< the basis grows by this fraction per iteration (at least by 1)
   int FullResolutionIterations = 2; ///< iterations on all vertices after the extension
+  /// The orientation the sample map should have: +1 preserved (the registration is a
+  /// rotation), -1 reversed (a reflection), 0 either. When not 0, an iteration whose map
+  /// comes out decisively of the other orientation is retried with the sign of one
+  /// eigenfunction negated (see ZoomOutOnSamples).
+  int Orientation = 0;
   int NumberOfThreads = 0;          ///< 0: one per core
 };
 
@@ -82,6 +89,17 @@ struct SampleMap
 
 /// ZoomOut from `initialTargetVertex` (one target vertex per source sample, e.g. read off
 /// the Möbius map) on the samples of both surfaces.
+///
+/// Orientation: the first few eigenfunctions of a bilaterally symmetric shape are all
+/// symmetric, so the first iterations cannot tell a point from its mirror counterpart and
+/// scramble the start's left and right; the first antisymmetric eigenfunction then enters
+/// with a sign fitted to that scrambled map, and which of the two near-isometries (the map
+/// or its mirror image) ZoomOut converges to is decided by noise. With
+/// `parameters.Orientation` set, an iteration whose map has at most
+/// `kOrientationDecided` of its sample triangles on the expected side is redone with each
+/// of the first kOrientationRows non-constant rows of its functional map negated in turn,
+/// and the best-oriented result is kept if at least 1 - kOrientationDecided of its
+/// triangles are on the expected side (at most kOrientationTries iterations per run).
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters);
 
@@ -100,6 +118,16 @@ std::vector<Index> SampleMapFromFunctionalMap(const SpectralSurface& source,
 SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& reversed, bool preserveOrientation, int flips,
   const ZoomOutParameters& parameters);
+
+/// Share of sample triangles on the expected side at or below which ZoomOutOnSamples
+/// calls an iteration's map decisively of the wrong orientation (a scrambled map, before
+/// any antisymmetric eigenfunction is in the basis, has about one half).
+constexpr double kOrientationDecided = 0.25;
+/// How many iterations of one ZoomOutOnSamples run may retry with a sign flipped, and
+/// among how many of the first non-constant eigenfunctions (each try costs one
+/// nearest-row search per function).
+constexpr int kOrientationTries = 3;
+constexpr int kOrientationRows = 10;
 
 /// True when a sample map has the orientation it should have: agreement above one half for
 /// an orientation-preserving map, below for an orientation-reversing one.
