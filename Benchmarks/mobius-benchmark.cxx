@@ -19,6 +19,7 @@
 // --ladder: the conformal map's scaling instead: each mesh and its Loop subdivisions (x4
 // vertices per level) up to MAX_VERTICES, each mapped once in a child process so that its
 // peak memory is its own (Benchmarks/plot_ladder.py draws the CSV).
+#include "MemoryReuse.h"
 #include "CorrespondenceScore.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
@@ -404,6 +405,7 @@ int Usage(std::ostream& out, int status)
 
 int main(int argc, char* argv[])
 {
+  KeepFreedMemoryForReuse();
   int repeat = 3;
   std::vector<int> resolutions = { 128, 256, 512 };
   std::string stages = "map,grid,register,correspond,refine";
