@@ -119,6 +119,8 @@ std::string UsageText()
           "  --basis-size K         eigenfunctions of the refinement (default "
        << defaults.BasisSize
        << ")\n"
+          "  --no-polish            keep the spectral map: no geometric polish (ARAP\n"
+          "                         non-rigid ICP of the source onto the target) after it\n"
           "  --output-geometry G    target | source: where OUT.vtp's points are (default target)\n"
           "Other:\n"
           "  --threads N            threads per threaded stage, 0 to 1024; 0: one per core\n"
@@ -233,6 +235,10 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
     else if (option == "--no-centering")
     {
       commandLine.Pipeline.Centering = false;
+    }
+    else if (option == "--no-polish")
+    {
+      commandLine.Pipeline.GeometricPolish = false;
     }
     else if (option == "--no-center-flow")
     {

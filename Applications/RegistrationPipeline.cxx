@@ -277,6 +277,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   refinement->SetOutputGeometry(options.OutputGeometry);
   refinement->SetBasisSize(options.BasisSize);
   refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), options.BasisSize));
+  refinement->SetGeometricPolish(options.GeometricPolish);
   refinement->SetNumberOfThreads(threads);
   return finish(RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress,
     result, result.Correspondence, error));

@@ -37,6 +37,7 @@ struct PipelineOptions
   int OutputGeometry = 0; // 0 target surface, 1 source surface
   bool Refine = true;     // spectral refinement of the Möbius map (false: the paper's map)
   int BasisSize = 80;
+  bool GeometricPolish = true; // the refinement's geometric polish (--no-polish: off)
   // Threads of every threaded stage (0: automatic, one per core of the CPU affinity mask,
   // at most VTK_SMP_MAX_THREADS); the results do not depend on it.
   int NumberOfThreads = 0;

@@ -2,6 +2,7 @@
 
 #include "ParallelFor.h"
 #include "SphericalPointLocator.h"
+#include "SurfacePolish.h"
 #include "ZoomOut.h"
 #include "vtkCorrespondenceOutput.h"
 #include "vtkDistributedInputs.h"
@@ -340,6 +341,26 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     locations.LocatedTriangles = &maps[1].Triangles;
     locations.Triangle = dense.Triangle;
     locations.Barycentric = dense.Barycentric;
+    double polishSeconds = 0.0;
+    if (this->GeometricPolish)
+    {
+      // On the scaled surfaces the spectral bases were computed on: the polish scales the
+      // source to the target's area itself, and the map is triangles and barycentrics.
+      mobius::SurfacePolishParameters polish;
+      polish.NumberOfThreads = threads;
+      // A mirror image (an orientation-reversing map: a reflection's, or a symmetry's) is
+      // polished as a rotation of the mirrored source.
+      polish.ReverseOrientation = best.OrientationAgreement < 0.5;
+      mobius::SurfacePolishInfo polishInfo;
+      if (!mobius::PolishSurfaceMap(surfaces[0].Positions, surfaces[0].Faces,
+            surfaces[1].Positions, surfaces[1].Faces, surfaces[1].Corners, locations.Triangle,
+            locations.Barycentric, polish, polishInfo))
+      {
+        vtkWarningMacro(<< "The geometric polish failed (" << polishInfo.Error
+                        << "); the spectral map is kept.");
+      }
+      polishSeconds = lap();
+    }
     mobius::vtk::AssembleCorrespondence(
       inputs[0], inputs[1], locations, this->OutputGeometry == TARGET, output);
     mobius::vtk::RemoveBasisArrays(output);
@@ -355,8 +376,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
     mobius::vtk::SetFieldValue(
       fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
-    const double seconds[3] = { basisSeconds, candidateSeconds, extensionSeconds };
-    mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 3);
+    const double seconds[4] = { basisSeconds, candidateSeconds, extensionSeconds, polishSeconds };
+    mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 4);
     const double storedBases[2] = { stored[0] ? 1.0 : 0.0, stored[1] ? 1.0 : 0.0 };
     mobius::vtk::SetFieldValues(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
     mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
@@ -378,6 +399,7 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SearchCandidates: " << this->SearchCandidates << "\n";
   os << indent << "RepairOrientation: " << this->RepairOrientation << "\n";
   os << indent << "ConsistentMassShare: " << this->ConsistentMassShare << "\n";
+  os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -37,8 +37,8 @@
  * - `RefinementOrthogonalityResidual`, `RefinementOrientationAgreement` of the final map,
  *   `RefinementOrientationRepaired` (1 if the kept candidate came out mirrored and was
  *   repaired), `RefinementBasisSize`;
- * - `RefinementStageSeconds` (3 values): eigenbases, candidate search, extension to every
- *   vertex;
+ * - `RefinementStageSeconds` (4 values): eigenbases, candidate search, extension to every
+ *   vertex, geometric polish (0 when off);
  * - `RefinementStoredBasisUsed` (2 values, source and target): 1 where the input's stored
  *   basis was used;
  * - `NumberOfThreadsUsed`.
@@ -160,6 +160,20 @@ public:
 
   ///@{
   /**
+   * Finish the spectral map geometrically (default on): the source mesh, scaled to the
+   * target's area, is deformed as rigidly as possible (ARAP) onto the target, starting from
+   * the mapped points, by a few non-rigid ICP iterations, and each vertex is projected onto
+   * the target. The spectral map is right to about an edge length but slides in thin parts;
+   * on near-isometric pairs the polish takes that slide out (see SurfacePolish.h and the
+   * README's Accuracy section).
+   */
+  vtkSetMacro(GeometricPolish, bool);
+  vtkGetMacro(GeometricPolish, bool);
+  vtkBooleanMacro(GeometricPolish, bool);
+  ///@}
+
+  ///@{
+  /**
    * Share of the consistent (finite-element) mass matrix blended with the lumped one in the
    * Laplace-Beltrami eigenproblem, 0..1 (0: lumped). See the README's Accuracy section.
    */
@@ -207,6 +221,7 @@ protected:
   bool SearchCandidates = true;
   bool RepairOrientation = true;
   double ConsistentMassShare = 0.0;
+  bool GeometricPolish = true;
   int OutputGeometry = TARGET;
   int NumberOfThreads = 0;
 

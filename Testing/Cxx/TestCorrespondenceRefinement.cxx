@@ -1,6 +1,7 @@
 // vtkCorrespondenceRefinement against ground truth on CGAL's cow (CC0): a rotated copy of
 // itself must come out exact, a rotated, re-triangulated copy (midpoint subdivision: the
-// same surface, vertex i of the mesh is vertex i of the copy) nearly so, and a bent, rotated
+// same surface, vertex i of the mesh is vertex i of the copy) nearly so, within the issue's
+// 5e-3 and well below the spectral map without the geometric polish, and a bent, rotated
 // copy far better than the Möbius map the refinement starts from; with the blended mass
 // matrix the rotated copy does not come out as its mirror image. Bad input gives errors.
 #include "MobiusTestUtilities.h"
@@ -36,10 +37,12 @@ vtkSmartPointer<vtkPolyData> Moved(
 struct Maps
 {
   vtkSmartPointer<vtkPolyData> Mobius, Refined;
+  vtkSmartPointer<vtkPolyData> Unpolished; // the refinement without its geometric polish
   double TargetArea = 0;
 };
 
-Maps Register(vtkPolyData* source, vtkPolyData* target, double consistentMassShare = 0.0)
+Maps Register(vtkPolyData* source, vtkPolyData* target, double consistentMassShare = 0.0,
+  bool withUnpolished = false)
 {
   vtkNew<vtkSphericalConformalMap> sourceMap, targetMap;
   sourceMap->SetInputData(source);
@@ -63,12 +66,28 @@ Maps Register(vtkPolyData* source, vtkPolyData* target, double consistentMassSha
   Maps maps;
   maps.Mobius = correspondence->GetOutput();
   maps.Refined = refinement->GetOutput();
+  if (withUnpolished)
+  {
+    vtkNew<vtkCorrespondenceRefinement> unpolished;
+    unpolished->SetSourceConnection(registration->GetOutputPort());
+    unpolished->SetTargetConnection(targetCentered->GetOutputPort());
+    unpolished->SetGeometricPolish(false);
+    unpolished->Update();
+    maps.Unpolished = unpolished->GetOutput();
+  }
   vtkDataArray* areas = targetMap->GetOutput()->GetCellData()->GetArray("SurfaceArea");
   for (vtkIdType t = 0; t < areas->GetNumberOfTuples(); ++t)
   {
     maps.TargetArea += areas->GetTuple1(t);
   }
   return maps;
+}
+
+// The last of the refinement's stage timings: its geometric polish.
+double PolishSeconds(vtkPolyData* map)
+{
+  vtkDataArray* seconds = map->GetFieldData()->GetArray("RefinementStageSeconds");
+  return seconds && seconds->GetNumberOfComponents() == 4 ? seconds->GetComponent(0, 3) : -1.0;
 }
 
 // Mean distance of MappedPoints from target point i (the truth), over sqrt(target area).
@@ -103,9 +122,8 @@ int TestCorrespondenceRefinement(int, char*[])
     Eigen::AngleAxisd(2.3, Eigen::Vector3d(-1, 2, 0.5).normalized()).toRotationMatrix();
   auto rotate = [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(rotation * p); };
 
-  // Exact isometries: a rotated copy comes out exact (measured 5.5e-4), a rotated,
-  // re-triangulated one nearly so (measured 6.5e-3 on this coarse mesh, 4x fewer vertices
-  // than its copy; the Möbius map alone: 3.1e-2).
+  // Exact isometries: a rotated copy comes out exact (measured 5.9e-5; 5.5e-4 without the
+  // polish), a rotated, re-triangulated one nearly so (below).
   auto rotated = Moved(cow, rotate);
   Maps maps = Register(cow, rotated);
   const double rotatedError = MeanError(maps.Refined, rotated, maps.TargetArea);
@@ -139,13 +157,20 @@ int TestCorrespondenceRefinement(int, char*[])
     MOBIUS_EXPECT(agreements->GetComponent(c, 0) > 0.5);
   }
 
+  // The re-triangulated copy (4x the vertices): the spectral map is limited by this coarse
+  // mesh's discretization of the Laplacian (measured 6.6e-3; the Möbius map alone 3.3e-2),
+  // the geometric polish takes it to 2.4e-3. Both from the same registration.
   auto remeshed = Moved(MidpointSubdivision(cow), rotate);
-  maps = Register(cow, remeshed);
+  maps = Register(cow, remeshed, 0.0, true);
   const double remeshedError = MeanError(maps.Refined, remeshed, maps.TargetArea);
+  const double unpolishedError = MeanError(maps.Unpolished, remeshed, maps.TargetArea);
   std::cout << "cow onto its re-triangulated, rotated copy: Möbius "
-            << MeanError(maps.Mobius, remeshed, maps.TargetArea) << ", refined " << remeshedError
-            << "\n";
-  MOBIUS_EXPECT(remeshedError <= 1e-2);
+            << MeanError(maps.Mobius, remeshed, maps.TargetArea) << ", refined without polish "
+            << unpolishedError << ", refined " << remeshedError << ", polish seconds "
+            << PolishSeconds(maps.Refined) << "\n";
+  MOBIUS_EXPECT(remeshedError <= 5e-3);
+  MOBIUS_EXPECT(remeshedError <= 0.6 * unpolishedError);
+  MOBIUS_EXPECT(PolishSeconds(maps.Refined) > 0 && PolishSeconds(maps.Unpolished) == 0);
 
   // A near-isometric deformation: the cow's body (along x) bent into an arc, then rotated.
   auto bent = Moved(cow, [&](const Eigen::Vector3d& p) {
@@ -158,7 +183,7 @@ int TestCorrespondenceRefinement(int, char*[])
   const double bentError = MeanError(maps.Refined, bent, maps.TargetArea);
   std::cout << "cow onto its bent, rotated copy: Möbius " << mobiusError << ", refined "
             << bentError << "\n";
-  MOBIUS_EXPECT(bentError <= 0.02 && bentError <= 0.5 * mobiusError);
+  MOBIUS_EXPECT(bentError <= 0.02 && bentError <= 0.5 * mobiusError); // measured 4.8e-3
 
   // Bad input: a basis larger than half the mesh (642 points), and a target without
   // SurfacePoints.

@@ -1,0 +1,402 @@
+#include "SurfacePolish.h"
+
+#include "CotangentLaplacian.h"
+#include "ParallelFor.h"
+#include "SparseCholesky.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mobius
+{
+namespace
+{
+// Calls work(begin, end) on chunks of [0, count) in parallel.
+template <typename Work>
+void ForChunks(Index count, int numberOfThreads, Work&& work)
+{
+  const Index chunk = 512;
+  const int chunks = static_cast<int>((count + chunk - 1) / chunk);
+  ParallelFor(chunks, ResolveThreadCount(numberOfThreads),
+    [&](int c, int) { work(c * chunk, std::min(count, (c + 1) * chunk)); });
+}
+
+// The point of triangle abc closest to q, as barycentric coordinates; returns the squared
+// distance. The Voronoi regions of the corners and edges are tested first (the interior
+// solution of the 2 x 2 normal equations is valid only when no region test applies).
+double ClosestOnTriangle(const Eigen::Vector3d& q, const Eigen::Vector3d& a,
+  const Eigen::Vector3d& b, const Eigen::Vector3d& c, Eigen::Vector3d& weights)
+{
+  const Eigen::Vector3d ab = b - a, ac = c - a, ap = q - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0)
+  {
+    weights << 1, 0, 0;
+    return ap.squaredNorm();
+  }
+  const Eigen::Vector3d bp = q - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3)
+  {
+    weights << 0, 1, 0;
+    return bp.squaredNorm();
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    const double s = d1 / (d1 - d3);
+    weights << 1 - s, s, 0;
+    return (a + s * ab - q).squaredNorm();
+  }
+  const Eigen::Vector3d cp = q - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6)
+  {
+    weights << 0, 0, 1;
+    return cp.squaredNorm();
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    const double s = d2 / (d2 - d6);
+    weights << 1 - s, 0, s;
+    return (a + s * ac - q).squaredNorm();
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  {
+    const double s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    weights << 0, 1 - s, s;
+    return (b + s * (c - b) - q).squaredNorm();
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0))
+  {
+    weights << 1, 0, 0; // degenerate triangle: its first corner
+    return ap.squaredNorm();
+  }
+  weights << va / sum, vb / sum, vc / sum;
+  return (weights[0] * a + weights[1] * b + weights[2] * c - q).squaredNorm();
+}
+
+struct TargetMesh
+{
+  const Points& Positions;
+  const Triangles& Faces;
+  const VertexLists& VertexFaces;
+
+  double Closest(const Eigen::Vector3d& q, Index t, Eigen::Vector3d& weights) const
+  {
+    return ClosestOnTriangle(q, this->Positions.row(this->Faces(t, 0)).transpose(),
+      this->Positions.row(this->Faces(t, 1)).transpose(),
+      this->Positions.row(this->Faces(t, 2)).transpose(), weights);
+  }
+
+  // The closest point to q reached by walking from triangle `t` to whichever triangle
+  // around its corners is closer, as long as one is: the points move by a fraction of an
+  // edge per iteration, so a local search finds them.
+  // With `insideIsEnough`, a point that projects inside its triangle stops there (exact on
+  // a flat neighbourhood, off by a second-order amount on a curved one: good enough between
+  // iterations, where most points do, at a tenth of the cost).
+  double Walk(const Eigen::Vector3d& q, Index& t, Eigen::Vector3d& weights,
+    bool insideIsEnough = false) const
+  {
+    double best = this->Closest(q, t, weights);
+    if (insideIsEnough && weights.minCoeff() > 0)
+    {
+      return best;
+    }
+    for (int step = 0; step < 64; ++step)
+    {
+      Index next = t;
+      for (int k = 0; k < 3; ++k)
+      {
+        const Index v = this->Faces(t, k);
+        for (Index j = this->VertexFaces.Begin(v); j < this->VertexFaces.End(v); ++j)
+        {
+          const Index u = this->VertexFaces.Items[j];
+          Eigen::Vector3d w;
+          const double d = u == t ? best : this->Closest(q, u, w);
+          if (d < best)
+          {
+            best = d;
+            next = u;
+            weights = w;
+          }
+        }
+      }
+      if (next == t)
+      {
+        break;
+      }
+      t = next;
+    }
+    return best;
+  }
+
+  Eigen::Vector3d Point(Index t, const Eigen::Vector3d& weights) const
+  {
+    return weights[0] * this->Positions.row(this->Faces(t, 0)).transpose() +
+      weights[1] * this->Positions.row(this->Faces(t, 1)).transpose() +
+      weights[2] * this->Positions.row(this->Faces(t, 2)).transpose();
+  }
+};
+
+double TotalArea(const Points& points, const Triangles& triangles)
+{
+  return TriangleAreas(points, triangles).sum();
+}
+
+double MeanEdgeLength(const Points& points, const Triangles& triangles)
+{
+  double sum = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      sum += (points.row(triangles(t, k)) - points.row(triangles(t, (k + 1) % 3))).norm();
+    }
+  }
+  return triangles.rows() > 0 ? sum / (3.0 * triangles.rows()) : 0.0;
+}
+
+Points AreaWeightedNormals(const Points& points, const Triangles& triangles)
+{
+  Points normals = Points::Zero(points.rows(), 3);
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::RowVector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
+                             c = points.row(triangles(t, 2));
+    const Eigen::RowVector3d normal = (b - a).cross(c - a);
+    for (int k = 0; k < 3; ++k)
+    {
+      normals.row(triangles(t, k)) += normal;
+    }
+  }
+  normals.rowwise().normalize();
+  return normals;
+}
+
+// The rotation R maximizing tr(R^T A), refined from `start` by rotating it about the axis
+// sum_c r_c x a_c (r_c, a_c: columns) until that torque vanishes (Müller, Bender, Chentanez &
+// Macklin, "A robust method to extract the rotational part of deformations", 2016). Warm
+// started from the previous iteration's rotation it needs a few steps, where an SVD per
+// vertex and iteration was most of the polish's time. The first iteration, whose start may
+// be any rotation (the copy's), takes the SVD.
+constexpr int kRotationSteps = 4;
+Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& a, const Eigen::Matrix3d& start)
+{
+  Eigen::Quaterniond q(start);
+  for (int step = 0; step < kRotationSteps; ++step)
+  {
+    const Eigen::Matrix3d r = q.toRotationMatrix();
+    const Eigen::Vector3d torque =
+      r.col(0).cross(a.col(0)) + r.col(1).cross(a.col(1)) + r.col(2).cross(a.col(2));
+    const double scale =
+      std::abs(r.col(0).dot(a.col(0)) + r.col(1).dot(a.col(1)) + r.col(2).dot(a.col(2))) +
+      1e-9 * a.norm() + 1e-300;
+    const Eigen::Vector3d omega = torque / scale;
+    const double angle = omega.norm();
+    if (angle < 1e-6)
+    {
+      break;
+    }
+    q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, omega / angle)) * q;
+    q.normalize();
+  }
+  return q.toRotationMatrix();
+}
+
+// ARAP edges with their weights, per vertex, from the stiffness matrix's off-diagonal entries
+// (the intrinsic Delaunay edges: non-negative weights; a non-mesh edge's vector is the chord
+// between its ends, as rigid as any other).
+struct WeightedNeighbors
+{
+  std::vector<Index> Offsets;
+  std::vector<Index> Items;
+  std::vector<double> Weights;
+};
+
+WeightedNeighbors NeighborsOf(const SparseMatrix& stiffness)
+{
+  WeightedNeighbors neighbors;
+  neighbors.Offsets.assign(static_cast<size_t>(stiffness.cols()) + 1, 0);
+  for (Index j = 0; j < stiffness.outerSize(); ++j)
+  {
+    for (SparseMatrix::InnerIterator it(stiffness, j); it; ++it)
+    {
+      if (it.row() != j && it.value() != 0)
+      {
+        neighbors.Items.push_back(it.row());
+        neighbors.Weights.push_back(std::max(0.0, -it.value()));
+      }
+    }
+    neighbors.Offsets[j + 1] = static_cast<Index>(neighbors.Items.size());
+  }
+  return neighbors;
+}
+}
+
+bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangles,
+  const Points& targetPoints, const Triangles& targetTriangles,
+  const VertexLists& targetVertexTriangles, std::vector<Index>& triangle,
+  std::vector<Eigen::Vector3d>& barycentric, const SurfacePolishParameters& parameters,
+  SurfacePolishInfo& info)
+{
+  const Index n = sourcePoints.rows();
+  info = SurfacePolishInfo();
+  const double sourceArea = TotalArea(sourcePoints, sourceTriangles);
+  const double targetArea = TotalArea(targetPoints, targetTriangles);
+  if (n == 0 || !(sourceArea > 0) || !(targetArea > 0))
+  {
+    info.Error = "a surface has no area";
+    return false;
+  }
+  // The source at the target's scale: an isometric copy is then rigid, not just similar.
+  Points x = sourcePoints * std::sqrt(targetArea / sourceArea);
+  if (parameters.ReverseOrientation)
+  {
+    // A map that reverses orientation (a mirror self-map) is a rotation of the mirrored
+    // source; ARAP's rotations could not follow it otherwise.
+    x.col(0) *= -1;
+  }
+  SparseMatrix system;
+  CotangentStiffnessInfo stiffnessInfo;
+  if (!BuildCotangentStiffness(x, sourceTriangles, true, system, stiffnessInfo))
+  {
+    info.Error = stiffnessInfo.Error;
+    return false;
+  }
+  const WeightedNeighbors neighbors = NeighborsOf(system);
+  Vector area = LumpedMass(x, sourceTriangles);
+  area *= static_cast<double>(n) / area.sum();
+  const double pull = parameters.Fit + parameters.Anchor;
+  for (Index i = 0; i < n; ++i)
+  {
+    system.coeffRef(i, i) += pull * area[i];
+  }
+  SparseCholesky cholesky;
+  if (!cholesky.Analyze(system) || !cholesky.Factorize(system))
+  {
+    info.Error = "the polish's system could not be factored";
+    return false;
+  }
+
+  const TargetMesh target{ targetPoints, targetTriangles, targetVertexTriangles };
+  // Outward normals: mirroring the points turned the triangles' normals inwards.
+  Points sourceNormals = AreaWeightedNormals(x, sourceTriangles);
+  if (parameters.ReverseOrientation)
+  {
+    sourceNormals *= -1;
+  }
+  const double reject = parameters.RejectDistance * MeanEdgeLength(targetPoints, targetTriangles);
+  const double reject2 = reject * reject;
+  // Row-major with 3 fixed columns, like Points: the per-edge products stay fixed-size.
+  Points spectral(n, 3);
+  for (Index i = 0; i < n; ++i)
+  {
+    spectral.row(i) = target.Point(triangle[i], barycentric[i]).transpose();
+  }
+  Points y = spectral, lastSolved = spectral;
+  std::vector<Index> current = triangle;
+  std::vector<Eigen::Matrix3d> rotations(static_cast<size_t>(n), Eigen::Matrix3d::Identity());
+  std::vector<char> trusted(static_cast<size_t>(n), 1);
+  const int threads = ResolveThreadCount(parameters.NumberOfThreads);
+
+  for (int iteration = 0; iteration < parameters.Iterations; ++iteration)
+  {
+    Eigen::MatrixXd rhs(n, 3); // column-major, as the solver takes it
+    ForChunks(n, threads, [&](Index begin, Index end) {
+      for (Index i = begin; i < end; ++i)
+      {
+        // ARAP local step: the rotation taking the source's edge vectors around i closest
+        // to the current ones, i.e. maximizing tr(R^T A), A = sum_j w_ij y_ij x_ij^T.
+        Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+        for (Index k = neighbors.Offsets[i]; k < neighbors.Offsets[i + 1]; ++k)
+        {
+          const Index j = neighbors.Items[k];
+          covariance += neighbors.Weights[k] * (y.row(j) - y.row(i)).transpose() * (x.row(j) - x.row(i));
+        }
+        Eigen::Matrix3d r;
+        if (iteration == 0)
+        {
+          const Eigen::JacobiSVD<Eigen::Matrix3d> svd(
+            covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+          Eigen::Matrix3d u = svd.matrixU();
+          if ((u * svd.matrixV().transpose()).determinant() < 0)
+          {
+            u.col(2) *= -1;
+          }
+          r = u * svd.matrixV().transpose();
+        }
+        else
+        {
+          r = NearestRotation(covariance, rotations[i]);
+        }
+        rotations[i] = r;
+
+        // The closest target point, if it can be trusted; else y_i itself.
+        const Eigen::Vector3d q = y.row(i).transpose();
+        Eigen::Vector3d weights;
+        const double d2 = target.Walk(q, current[i], weights, true);
+        const Index t = current[i];
+        const Eigen::Vector3d a = targetPoints.row(targetTriangles(t, 0)).transpose(),
+                              b = targetPoints.row(targetTriangles(t, 1)).transpose(),
+                              c = targetPoints.row(targetTriangles(t, 2)).transpose();
+        const Eigen::Vector3d faceNormal = (b - a).cross(c - a).normalized();
+        const double facing = faceNormal.dot(r * sourceNormals.row(i).transpose());
+        trusted[i] = d2 <= reject2 && facing >= parameters.MinimumNormalCosine ? 1 : 0;
+        const Eigen::Vector3d closest = trusted[i] ? target.Point(t, weights) : q;
+        rhs.row(i) = area[i] *
+          (parameters.Fit * closest + parameters.Anchor * spectral.row(i).transpose()).transpose();
+      }
+    });
+    // ARAP global step's right-hand side: sum_j w_ij (R_i + R_j) / 2 (x_i - x_j).
+    ForChunks(n, threads, [&](Index begin, Index end) {
+      for (Index i = begin; i < end; ++i)
+      {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for (Index k = neighbors.Offsets[i]; k < neighbors.Offsets[i + 1]; ++k)
+        {
+          const Index j = neighbors.Items[k];
+          sum += 0.5 * neighbors.Weights[k] * (rotations[i] + rotations[j]) *
+            (x.row(i) - x.row(j)).transpose();
+        }
+        rhs.row(i) += sum.transpose();
+      }
+    });
+    const Points solved = cholesky.Solve(rhs);
+    y = iteration > 0 ? Points(solved + parameters.Momentum * (solved - lastSolved)) : solved;
+    lastSolved = solved;
+  }
+
+  // The last solution itself, not its extrapolation, onto the target.
+  std::vector<char> kept(static_cast<size_t>(n), 0);
+  ForChunks(n, threads, [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i)
+    {
+      Index t = current[i];
+      Eigen::Vector3d weights;
+      if (lastSolved.row(i).allFinite() &&
+        target.Walk(lastSolved.row(i).transpose(), t, weights) <= reject2)
+      {
+        triangle[i] = t;
+        barycentric[i] = weights;
+      }
+      else
+      {
+        kept[i] = 1; // far from the target: its spectral point stays
+      }
+    }
+  });
+  const Index rejected = std::count(trusted.begin(), trusted.end(), 0);
+  const Index keptSpectral = std::count(kept.begin(), kept.end(), 1);
+  info.Rejected = rejected;
+  info.KeptSpectral = keptSpectral;
+  return true;
+}
+}

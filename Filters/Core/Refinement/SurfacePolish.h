@@ -1,0 +1,87 @@
+// Geometric polish of a dense surface map (source vertex -> point on the target), after the
+// spectral refinement: non-rigid ICP with an as-rigid-as-possible regularizer.
+//
+// The spectral map is right to about an edge length but slides in thin parts, by an amount
+// set by how well the coarse mesh's Laplacian is discretized, not by the search. Geometry can
+// finish it: a near-isometric copy is locally rigid, so the source mesh, deformed as rigidly
+// as it can be while its vertices lie on the target, lands on the true images. Unknowns are
+// positions y_i (one per source vertex, starting at the mapped points z_i); each iteration
+// fits a rotation R_i per vertex to its neighbourhood (the ARAP local step), finds the point
+// c_i of the target closest to y_i, and solves
+//
+//   min  ARAP(y; x, R) + Fit sum_i d_i |y_i - c_i|^2 + Anchor sum_i d_i |y_i - z_i|^2
+//
+// (x: the source scaled to the target's area; ARAP on the intrinsic Delaunay cotangent
+// weights; d_i: vertex area over mean vertex area). The system matrix L + (Fit + Anchor) D
+// does not change, so it is factored once (the closest-point term is point-to-point, not
+// point-to-plane, for that reason: along the surface it only holds y_i near its last
+// position, which slows slides down but does not stop them; heavy-ball momentum makes up for
+// most of it). A correspondence that looks wrong (c_i farther than RejectDistance mean
+// target edges from y_i, or the target facing another way than the rotated source normal)
+// pulls y_i towards where it already is instead, which keeps the matrix fixed while that
+// vertex follows its neighbours. Finally each y_i is projected onto the target (closest
+// points by walking over the target's triangles from the last one); a vertex that ends far
+// from the target keeps its spectral point.
+//
+// Measured (README, Accuracy): on rotated re-triangulated copies the mean error falls from
+// 6.3e-3..8.1e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a quarter to a half, on SMPL's man ->
+// woman (not isometric: different bodies) from 0.0082 to 0.0037; 15 iterations cost about a
+// sixth of the refinement on a 17,500-vertex mesh.
+#ifndef mobius_SurfacePolish_h
+#define mobius_SurfacePolish_h
+
+#include "MeshAdjacency.h"
+#include "MeshTypes.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace mobius
+{
+struct SurfacePolishParameters
+{
+  int Iterations = 15;
+  /// Weight of the closest-point term per vertex, against the ARAP energy (whose weights
+  /// per vertex sum to about 2-4 on a regular mesh): of order 1 balances the two at the
+  /// scale of an edge.
+  double Fit = 0.3;
+  /// Weight of the pull back to the spectral map: small, it only keeps directions the
+  /// geometry does not fix (sliding along a featureless cylinder) where they were.
+  double Anchor = 0.005;
+  /// Closest points farther than this many mean target edge lengths are not trusted.
+  double RejectDistance = 3.0;
+  /// Closest points whose target normal makes a larger angle than this cosine allows with
+  /// the rotated source normal are not trusted (the other side of a thin part).
+  double MinimumNormalCosine = 0.3;
+  /// Each iteration's solution is pushed on by this share of its step from the last one
+  /// (heavy-ball momentum): slides of whole parts, which the closest-point term (anchored at
+  /// the last iterate along the surface) lets through only slowly, converge several times
+  /// faster.
+  double Momentum = 0.8;
+  /// The map reverses orientation (a mirror image, e.g. a bilateral self-map): the source
+  /// is mirrored first, so that rotations can follow it.
+  bool ReverseOrientation = false;
+  int NumberOfThreads = 0; ///< 0: one per core
+};
+
+struct SurfacePolishInfo
+{
+  Index Rejected = 0;  ///< correspondences not trusted in the last iteration
+  Index KeptSpectral = 0; ///< vertices that kept their spectral point
+  std::string Error;
+};
+
+/// Polishes the map given as a target triangle and barycentric coordinates per source
+/// vertex, in place. `targetTriangles` is the list of triangles around each target vertex
+/// (VertexTriangles). False with info.Error set (and the map unchanged) if the source's
+/// Laplacian cannot be built or factored.
+bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangles,
+  const Points& targetPoints, const Triangles& targetTriangles,
+  const VertexLists& targetVertexTriangles, std::vector<Index>& triangle,
+  std::vector<Eigen::Vector3d>& barycentric, const SurfacePolishParameters& parameters,
+  SurfacePolishInfo& info);
+}
+
+#endif
