@@ -24,9 +24,9 @@
 // from the target keeps its spectral point.
 //
 // Measured (README, Accuracy): on rotated re-triangulated copies the mean error falls from
-// 6.3e-3..8.1e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a quarter to a half, on SMPL's man ->
-// woman (not isometric: different bodies) from 0.0082 to 0.0037; 15 iterations cost about a
-// sixth of the refinement on a 17,500-vertex mesh.
+// 4.9e-3..7.9e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a fifth to a half, on
+// SMPL's man -> woman (not isometric: different bodies) from 0.0082 to 0.0038; 15 iterations
+// cost about a sixth of the refinement on a 17,500-vertex mesh.
 #ifndef mobius_SurfacePolish_h
 #define mobius_SurfacePolish_h
 
