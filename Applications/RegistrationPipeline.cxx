@@ -309,6 +309,7 @@ bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
   detection->SetNumberOfCandidates(options.NumberOfCandidates);
   detection->SetRefine(options.Refine);
   detection->SetBasisSize(options.BasisSize);
+  detection->SetGeometricPolish(options.GeometricPolish);
   detection->SetNumberOfThreads(options.NumberOfThreads);
   const size_t warnings = result.Warnings.size();
   if (!RunStage(detection, "symmetry detection", name, progress, result, result.Correspondence, error))

@@ -263,6 +263,7 @@ int vtkSymmetryDetection::ComputeOutput(
     refinement->SetTargetData(centered);
     refinement->SetBasisSize(this->BasisSize);
     refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), this->BasisSize));
+    refinement->SetGeometricPolish(this->GeometricPolish);
     refinement->SetOutputGeometryToSource();
     refinement->SetNumberOfThreads(threads);
     symmetric = run(refinement, "refinement", 0.5, 0.95);
@@ -413,6 +414,7 @@ void vtkSymmetryDetection::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
   os << indent << "Refine: " << this->Refine << "\n";
   os << indent << "BasisSize: " << this->BasisSize << "\n";
+  os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -121,6 +121,17 @@ public:
 
   ///@{
   /**
+   * End the refinement with its geometric polish (vtkCorrespondenceRefinement's
+   * GeometricPolish, default on): the mirrored surface deformed as rigidly as possible onto
+   * the surface.
+   */
+  vtkSetMacro(GeometricPolish, bool);
+  vtkGetMacro(GeometricPolish, bool);
+  vtkBooleanMacro(GeometricPolish, bool);
+  ///@}
+
+  ///@{
+  /**
    * Exactness where the spherical map is exactly symmetric: a vertex whose reflected
    * sphere point lies within SnapTolerance x (the shortest sphere edge at a vertex w) of w
    * is mapped exactly onto w, whatever the refinement's interpolation made of it (an exactly
@@ -156,6 +167,7 @@ protected:
   int NumberOfCandidates = 4;
   bool Refine = true;
   int BasisSize = 80;
+  bool GeometricPolish = true;
   double SnapTolerance = 1e-3;
   int NumberOfThreads = 0;
 

@@ -30,6 +30,7 @@ __all__ = ["register", "Registration", "RegistrationError"]
 DEFAULT_OPTIONS = {
     "refine": True,               # spectral refinement (False: the Möbius map alone)
     "basis_size": 80,             # eigenfunctions of the refinement
+    "polish": True,               # the refinement's geometric polish (mobius-register --no-polish: False)
     "resolution": 256,            # scale-factor grid of the SO(3) correlation (even)
     "smoothing": 0.0005,          # heat-kernel smoothing time of the scale factors
     "transform": "rotation",      # rotation | reflection | both
@@ -219,7 +220,8 @@ def register(source, target, **options):
     a (vertices, faces) pair of arrays ((n, 3) floats, (m, 3) vertex numbers). Both must be
     closed genus-0 triangle surfaces (see fill_holes, keep_largest_component).
 
-    Options (defaults as mobius-register's): refine=True, basis_size=80, resolution=256,
+    Options (defaults as mobius-register's): refine=True, basis_size=80, polish=True (end the
+    refinement with its geometric polish; False as --no-polish), resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
     iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,
     allow_poor_maps=False, threads=0 (threads of each threaded filter, 0 to 1024; 0 is one
@@ -271,6 +273,7 @@ def register(source, target, **options):
         correspondence.SetBasisSize(basis_size)
         correspondence.SetStartBasisSize(min(correspondence.GetStartBasisSize(), basis_size))
         correspondence.SetScreeningBasisSize(min(correspondence.GetScreeningBasisSize(), basis_size))
+        correspondence.SetGeometricPolish(bool(options["polish"]))
     else:
         correspondence = errors.watch(vtkDenseCorrespondence())
     correspondence.SetNumberOfThreads(int(threads))
