@@ -1,6 +1,10 @@
 #include "SqueezedRegionRefinement.h"
 
+#ifdef MOBIUS_HAVE_CHOLMOD
+#include <Eigen/UmfPackSupport>
+#else
 #include <Eigen/SparseLU>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +14,49 @@ namespace mobius
 {
 namespace
 {
+#ifdef MOBIUS_HAVE_CHOLMOD
+// SuiteSparse's UMFPACK, told that the matrix is nearly symmetric: it orders the pattern of
+// A + A^T by AMD and takes the diagonal pivots, which a diagonally dominant system like this
+// one allows. The regions can be large (a Loop-subdivided CGAL man of 1.1M vertices has
+// 383K squeezed vertices in its limbs, re-solved at three levels): that took 10.2 s with
+// Eigen's SparseLU (COLAMD), as long with UMFPACK's default (unsymmetric) strategy, and
+// 5.7 s with this one, with the same map to the digits checked.
+class RegionSolver
+{
+public:
+  bool Compute(const SparseMatrix& system)
+  {
+    this->Solver.umfpackControl()(UMFPACK_STRATEGY) = UMFPACK_STRATEGY_SYMMETRIC;
+    this->Solver.compute(system);
+    return this->Solver.info() == Eigen::Success;
+  }
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rightHandSides) const
+  {
+    return this->Solver.solve(rightHandSides);
+  }
+
+private:
+  Eigen::UmfPackLU<SparseMatrix> Solver;
+};
+#else
+class RegionSolver
+{
+public:
+  bool Compute(const SparseMatrix& system)
+  {
+    this->Solver.compute(system);
+    return this->Solver.info() == Eigen::Success;
+  }
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rightHandSides)
+  {
+    return this->Solver.solve(rightHandSides);
+  }
+
+private:
+  Eigen::SparseLU<SparseMatrix> Solver;
+};
+#endif
+
 // Floater's mean-value weights of the original surface, row i: w_ij = (tan(a/2) + tan(b/2)) /
 // |p_i - p_j| with a, b the angles at p_i next to edge ij. Positive for every triangulation,
 // which is what makes the re-solved region fold-free (Floater 2003); not symmetric.
@@ -138,14 +185,13 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
     SparseMatrix system(m, m);
     system.setFromTriplets(entries.begin(), entries.end());
     system.makeCompressed();
-    Eigen::SparseLU<SparseMatrix> solver;
-    solver.compute(system);
-    if (solver.info() != Eigen::Success)
+    RegionSolver solver;
+    if (!solver.Compute(system))
     {
       result.Success = false;
       break;
     }
-    const Eigen::MatrixXd y = solver.solve(rhs);
+    const Eigen::MatrixXd y = solver.Solve(rhs);
     if (!y.allFinite())
     {
       result.Success = false;
