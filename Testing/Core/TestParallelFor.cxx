@@ -1,5 +1,6 @@
-// ParallelFor: every index runs once; an exception thrown in a worker thread reaches the
-// caller (instead of std::terminate), with its type and message, after all threads joined.
+// ParallelFor: every index runs once (ParallelForChunks: every index once, in whole chunks); an
+// exception thrown in a worker thread reaches the caller (instead of std::terminate), with its
+// type and message, after all threads joined.
 // ResolveThreadCount: the automatic count follows the CPU affinity mask and
 // VTK_SMP_MAX_THREADS.
 #include "CoreTest.h"
@@ -29,6 +30,27 @@ void EveryIndexOnce()
   for (auto& count : visits)
   {
     MOBIUS_CHECK(count == 1);
+  }
+}
+
+// Chunks cover [0, count) once each, in ranges of at most `chunk`, whether the count is a
+// multiple of the chunk or not (or zero).
+void EveryIndexOnceInChunks()
+{
+  for (long count : { 0L, 1L, 511L, 512L, 1025L })
+  {
+    std::vector<std::atomic<int>> visits(static_cast<size_t>(count));
+    ParallelForChunks<long>(count, 512, 3, [&](long begin, long end) {
+      MOBIUS_CHECK(begin < end && end - begin <= 512 && begin % 512 == 0);
+      for (long i = begin; i < end; ++i)
+      {
+        ++visits[static_cast<size_t>(i)];
+      }
+    });
+    for (auto& visitCount : visits)
+    {
+      MOBIUS_CHECK(visitCount == 1);
+    }
   }
 }
 
@@ -182,6 +204,7 @@ int main()
 {
   AutomaticThreadCount();
   EveryIndexOnce();
+  EveryIndexOnceInChunks();
   WorkerExceptionReachesCaller(std::runtime_error("worker failed"), "worker failed");
   WorkerExceptionReachesCaller(std::bad_alloc(), "");
   AllThreadsThrow();

@@ -116,6 +116,18 @@ void ParallelFor(int count, int numberOfThreads, Work&& work)
     std::rethrow_exception(failure);
   }
 }
+
+/// Calls work(begin, end) on consecutive chunks of `chunk` indices of [0, count), the chunks
+/// spread over `numberOfThreads` threads (0: automatic, see ResolveThreadCount). For
+/// per-item loops whose items are too cheap to hand out one at a time.
+template <typename Index, typename Work>
+void ParallelForChunks(Index count, Index chunk, int numberOfThreads, Work&& work)
+{
+  const int chunks = static_cast<int>((count + chunk - 1) / chunk);
+  ParallelFor(chunks, ResolveThreadCount(numberOfThreads), [&](int c, int) {
+    work(static_cast<Index>(c) * chunk, std::min(count, static_cast<Index>(c + 1) * chunk));
+  });
+}
 }
 
 #endif

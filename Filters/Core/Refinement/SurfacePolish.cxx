@@ -15,16 +15,6 @@ namespace mobius
 {
 namespace
 {
-// Calls work(begin, end) on chunks of [0, count) in parallel.
-template <typename Work>
-void ForChunks(Index count, int numberOfThreads, Work&& work)
-{
-  const Index chunk = 512;
-  const int chunks = static_cast<int>((count + chunk - 1) / chunk);
-  ParallelFor(chunks, ResolveThreadCount(numberOfThreads),
-    [&](int c, int) { work(c * chunk, std::min(count, (c + 1) * chunk)); });
-}
-
 // The point of triangle abc closest to q, as barycentric coordinates; returns the squared
 // distance. The Voronoi regions of the corners and edges are tested first (the interior
 // solution of the 2 x 2 normal equations is valid only when no region test applies).
@@ -310,7 +300,7 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
   for (int iteration = 0; iteration < parameters.Iterations; ++iteration)
   {
     Eigen::MatrixXd rhs(n, 3); // column-major, as the solver takes it
-    ForChunks(n, threads, [&](Index begin, Index end) {
+    ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
       for (Index i = begin; i < end; ++i)
       {
         // ARAP local step: the rotation taking the source's edge vectors around i closest
@@ -356,7 +346,7 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
       }
     });
     // ARAP global step's right-hand side: sum_j w_ij (R_i + R_j) / 2 (x_i - x_j).
-    ForChunks(n, threads, [&](Index begin, Index end) {
+    ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
       for (Index i = begin; i < end; ++i)
       {
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
@@ -376,7 +366,7 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
 
   // The last solution itself, not its extrapolation, onto the target.
   std::vector<char> kept(static_cast<size_t>(n), 0);
-  ForChunks(n, threads, [&](Index begin, Index end) {
+  ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
     for (Index i = begin; i < end; ++i)
     {
       Index t = current[i];

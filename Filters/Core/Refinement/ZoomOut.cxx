@@ -32,17 +32,6 @@ Eigen::MatrixXd FitFunctionalMap(const RowMatrix& a, const RowMatrix& b)
   const Eigen::MatrixXd normal = a.transpose() * a;
   return normal.ldlt().solve(a.transpose() * b);
 }
-
-// Calls work(begin, end) on chunks of [0, count) in parallel.
-template <typename Work>
-void ForChunks(Index count, int numberOfThreads, Work&& work)
-{
-  const Index chunk = 1024;
-  const int chunks = static_cast<int>((count + chunk - 1) / chunk);
-  ParallelFor(chunks, ResolveThreadCount(numberOfThreads), [&](int c, int) {
-    work(c * chunk, std::min(count, (c + 1) * chunk));
-  });
-}
 }
 
 // Share of the source's sample triangles that face the same way after mapping: the normal of
@@ -310,7 +299,7 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
   result.NearestVertex.resize(static_cast<size_t>(n));
   Eigen::MatrixXd c = samples.FunctionalMap;
   RowMatrix transformedTarget = targetEmbedding * c.transpose();
-  ForChunks(n, parameters.NumberOfThreads, [&](Index begin, Index end) {
+  ParallelForChunks<Index>(n, 1024, parameters.NumberOfThreads, [&](Index begin, Index end) {
     for (Index i = begin; i < end; ++i)
     {
       const Index label = source.SampleLabels[i];
@@ -326,7 +315,7 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
     const RowMatrix mapped = GatherRows(targetEmbedding, result.NearestVertex, static_cast<int>(k));
     c = sourceEmbedding.transpose() * (source.Mass * mapped);
     transformedTarget = targetEmbedding * c.transpose();
-    ForChunks(n, parameters.NumberOfThreads, [&](Index begin, Index end) {
+    ParallelForChunks<Index>(n, 1024, parameters.NumberOfThreads, [&](Index begin, Index end) {
       for (Index i = begin; i < end; ++i)
       {
         result.NearestVertex[i] = DescendToNearestVertex(sourceEmbedding.row(i),
@@ -340,7 +329,7 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
 
   result.Triangle.resize(static_cast<size_t>(n));
   result.Barycentric.resize(static_cast<size_t>(n));
-  ForChunks(n, parameters.NumberOfThreads, [&](Index begin, Index end) {
+  ParallelForChunks<Index>(n, 1024, parameters.NumberOfThreads, [&](Index begin, Index end) {
     for (Index i = begin; i < end; ++i)
     {
       ProjectOntoIncidentTriangles(sourceEmbedding.row(i), transformedTarget, target.Faces, target.Corners,
