@@ -47,7 +47,7 @@ public:
     this->Solver.compute(system);
     return this->Solver.info() == Eigen::Success;
   }
-  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rightHandSides)
+  Eigen::MatrixXd Solve(const Eigen::MatrixXd& rightHandSides) const
   {
     return this->Solver.solve(rightHandSides);
   }

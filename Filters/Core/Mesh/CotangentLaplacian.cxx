@@ -25,6 +25,23 @@ Vector TriangleAreas(const Points& points, const Triangles& triangles)
   return areas;
 }
 
+Points AreaWeightedVertexNormals(const Points& points, const Triangles& triangles)
+{
+  Points normals = Points::Zero(points.rows(), 3);
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::RowVector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
+                             c = points.row(triangles(t, 2));
+    const Eigen::RowVector3d normal = (b - a).cross(c - a); // |normal| = 2 x area
+    for (int k = 0; k < 3; ++k)
+    {
+      normals.row(triangles(t, k)) += normal;
+    }
+  }
+  normals.rowwise().normalize();
+  return normals;
+}
+
 Vector LumpedMass(const Points& points, const Triangles& triangles)
 {
   const Vector areas = TriangleAreas(points, triangles);

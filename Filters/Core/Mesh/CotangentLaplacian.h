@@ -1,5 +1,6 @@
 // The finite-element Laplacian of a triangle mesh: the cotangent stiffness matrix and the
-// lumped mass matrix, plus the per-triangle areas both are built from.
+// lumped mass matrix, plus the per-triangle areas both are built from (and the vertex
+// normals they give).
 #ifndef mobius_CotangentLaplacian_h
 #define mobius_CotangentLaplacian_h
 
@@ -15,6 +16,10 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 
 /// Area of each triangle.
 Vector TriangleAreas(const Points& points, const Triangles& triangles);
+
+/// Unit vertex normals: the sum of the normals of the triangles around each vertex, each
+/// weighted by its area.
+Points AreaWeightedVertexNormals(const Points& points, const Triangles& triangles);
 
 /// Lumped (barycentric) mass: each vertex gets a third of the area of its triangles.
 Vector LumpedMass(const Points& points, const Triangles& triangles);

@@ -154,23 +154,6 @@ double MeanEdgeLength(const Points& points, const Triangles& triangles)
   return triangles.rows() > 0 ? sum / (3.0 * triangles.rows()) : 0.0;
 }
 
-Points AreaWeightedNormals(const Points& points, const Triangles& triangles)
-{
-  Points normals = Points::Zero(points.rows(), 3);
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::RowVector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
-                             c = points.row(triangles(t, 2));
-    const Eigen::RowVector3d normal = (b - a).cross(c - a);
-    for (int k = 0; k < 3; ++k)
-    {
-      normals.row(triangles(t, k)) += normal;
-    }
-  }
-  normals.rowwise().normalize();
-  return normals;
-}
-
 // The rotation R maximizing tr(R^T A), refined from `start` by rotating it about the axis
 // sum_c r_c x a_c (r_c, a_c: columns) until that torque vanishes (Müller, Bender, Chentanez &
 // Macklin, "A robust method to extract the rotational part of deformations", 2016). Warm
@@ -278,7 +261,7 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
 
   const TargetMesh target{ targetPoints, targetTriangles, targetVertexTriangles };
   // Outward normals: mirroring the points turned the triangles' normals inwards.
-  Points sourceNormals = AreaWeightedNormals(x, sourceTriangles);
+  Points sourceNormals = AreaWeightedVertexNormals(x, sourceTriangles);
   if (parameters.ReverseOrientation)
   {
     sourceNormals *= -1;

@@ -1,5 +1,6 @@
 #include "ZoomOut.h"
 
+#include "CotangentLaplacian.h"
 #include "ParallelFor.h"
 #include "SurfaceSampling.h"
 
@@ -92,18 +93,7 @@ void PrepareSpectralSurface(const Points& points, const Triangles& triangles,
   LaplaceBeltramiBasis basis, Index sampleCount, SpectralSurface& surface)
 {
   surface.Positions = points;
-  surface.Normals = Points::Zero(points.rows(), 3);
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::RowVector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
-                             c = points.row(triangles(t, 2));
-    const Eigen::RowVector3d normal = (b - a).cross(c - a); // |normal| = 2 x area
-    for (int k = 0; k < 3; ++k)
-    {
-      surface.Normals.row(triangles(t, k)) += normal;
-    }
-  }
-  surface.Normals.rowwise().normalize();
+  surface.Normals = AreaWeightedVertexNormals(points, triangles);
   surface.Faces = triangles;
   surface.Embedding = basis.Functions;
   surface.Eigenvalues = std::move(basis.Eigenvalues);
