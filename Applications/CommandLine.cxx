@@ -112,6 +112,10 @@ std::string UsageText()
           "  --candidates K         correlation peaks to report (default "
        << defaults.NumberOfCandidates
        << ")\n"
+          "  --candidate K          keep the refinement's map from candidate K (0..K-1 of\n"
+          "                         --candidates; 0 the best peak) instead of the one it\n"
+          "                         chooses: for a map that came out turned or mirrored\n"
+          "                         while a warning named a near-equal runner-up\n"
           "Correspondence:\n"
           "  --refine METHOD        spectral | none: refine the Moebius map (ZoomOut on the\n"
           "                         surfaces' Laplace-Beltrami bases, from every candidate\n"
@@ -340,6 +344,16 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
           : option == "--resolution" ? commandLine.Pipeline.Resolution
                                      : commandLine.Pipeline.NumberOfCandidates) = number;
     }
+    else if (option == "--candidate")
+    {
+      int number = 0;
+      if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 63)
+      {
+        error = error.empty() ? "--candidate needs an integer from 0 to 63, not '" + text + "'" : error;
+        return false;
+      }
+      commandLine.Pipeline.Candidate = number;
+    }
     else if (option == "--tolerance" || option == "--smoothing")
     {
       // NaN passes every comparison and an infinite or huge smoothing time wipes out the
@@ -451,6 +465,13 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
   if (!commandLine.Pipeline.Centering)
   {
     error = "--no-centering is for --symmetry only";
+    return false;
+  }
+  if (commandLine.Pipeline.Candidate >= commandLine.Pipeline.NumberOfCandidates)
+  {
+    error = "--candidate " + std::to_string(commandLine.Pipeline.Candidate) +
+      " names no candidate: there are " + std::to_string(commandLine.Pipeline.NumberOfCandidates) +
+      " (--candidates), numbered from 0";
     return false;
   }
   if (positional.empty())

@@ -56,6 +56,23 @@ std::string Array(vtkPolyData* data, const char* name, int components)
   return out + "]";
 }
 
+// How sure the refinement is of its choice (RefinementConfidence): the kept map's curvature
+// difference, the runner-up (null if none) and the margin to it (null if none).
+std::string Confidence(vtkPolyData* refined)
+{
+  vtkDataArray* confidence = refined->GetFieldData()->GetArray("RefinementConfidence");
+  if (!confidence || confidence->GetNumberOfComponents() * confidence->GetNumberOfTuples() < 3)
+  {
+    return "null";
+  }
+  const bool runnerUp = confidence->GetComponent(0, 1) >= 0;
+  std::ostringstream out;
+  out << "{\"curvature_difference\": " << Number(confidence->GetComponent(0, 0))
+      << ", \"runner_up\": " << (runnerUp ? Number(confidence->GetComponent(0, 1)) : "null")
+      << ", \"margin\": " << (runnerUp ? Number(confidence->GetComponent(0, 2)) : "null") << "}";
+  return out.str();
+}
+
 // What the refinement chose and why: every candidate's score, the kept one's index.
 std::string Refinement(vtkPolyData* refined, bool done)
 {
@@ -69,15 +86,20 @@ std::string Refinement(vtkPolyData* refined, bool done)
       << ", \"orthogonality_residual\": " << Number(FieldValue(refined, "RefinementOrthogonalityResidual"))
       << ", \"orientation_agreement\": " << Number(FieldValue(refined, "RefinementOrientationAgreement"))
       << ", \"orientation_repaired\": " << (FieldValue(refined, "RefinementOrientationRepaired") == 1 ? "true" : "false")
+      << ", \"mean_stretch\": " << Number(FieldValue(refined, "RefinementMeanStretch"))
+      << ", \"confidence\": " << Confidence(refined)
       << ", \"candidates\": [";
   vtkDataArray* residuals = refined->GetFieldData()->GetArray("CandidateOrthogonalityResiduals");
   vtkDataArray* coverage = refined->GetFieldData()->GetArray("CandidateTargetCoverage");
   vtkDataArray* orientation = refined->GetFieldData()->GetArray("CandidateOrientationAgreement");
-  for (vtkIdType c = 0; residuals && coverage && orientation && c < residuals->GetNumberOfTuples(); ++c)
+  vtkDataArray* curvature = refined->GetFieldData()->GetArray("CandidateCurvatureDifferences");
+  for (vtkIdType c = 0; residuals && coverage && orientation && curvature &&
+       c < residuals->GetNumberOfTuples(); ++c)
   {
     out << (c ? ", " : "") << "{\"orthogonality_residual\": " << Number(residuals->GetComponent(c, 0))
         << ", \"target_coverage\": " << Number(coverage->GetComponent(c, 0))
-        << ", \"orientation_agreement\": " << Number(orientation->GetComponent(c, 0)) << "}";
+        << ", \"orientation_agreement\": " << Number(orientation->GetComponent(c, 0))
+        << ", \"curvature_difference\": " << Number(curvature->GetComponent(c, 0)) << "}";
   }
   out << "]}";
   return out.str();

@@ -278,6 +278,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   refinement->SetBasisSize(options.BasisSize);
   refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), options.BasisSize));
   refinement->SetGeometricPolish(options.GeometricPolish);
+  refinement->SetCandidate(options.Candidate);
   refinement->SetNumberOfThreads(threads);
   return finish(RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress,
     result, result.Correspondence, error));

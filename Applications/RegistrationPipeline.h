@@ -38,6 +38,7 @@ struct PipelineOptions
   bool Refine = true;     // spectral refinement of the Möbius map (false: the paper's map)
   int BasisSize = 80;
   bool GeometricPolish = true; // the refinement's geometric polish (--no-polish: off)
+  int Candidate = -1; // the refinement's candidate to keep (--candidate; -1: it chooses)
   // Threads of every threaded stage (0: automatic, one per core of the CPU affinity mask,
   // at most VTK_SMP_MAX_THREADS); the results do not depend on it.
   int NumberOfThreads = 0;

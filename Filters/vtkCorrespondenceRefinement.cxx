@@ -1,5 +1,8 @@
 #include "vtkCorrespondenceRefinement.h"
 
+#include "CandidateChoice.h"
+#include "CotangentLaplacian.h"
+#include "EdgeStretch.h"
 #include "ParallelFor.h"
 #include "SphericalPointLocator.h"
 #include "SurfacePolish.h"
@@ -14,6 +17,7 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkPointData.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
@@ -119,6 +123,57 @@ std::vector<mobius::Index> StartingSampleMap(const Matrix3& start, const mobius:
     targetVertex[s] = targetTriangles(location.Triangle, corner);
   }
   return targetVertex;
+}
+
+// The sphere points of both surfaces' samples, the source's turned by `start`: what keeps a
+// candidate's ZoomOut on the side its rotation put it (mobius::SampleAnchor).
+mobius::SampleAnchor SphereAnchor(const Matrix3& start, const mobius::Points& sourceSphere,
+  const std::vector<mobius::Index>& sourceSamples, const mobius::Points& targetSphere,
+  const std::vector<mobius::Index>& targetSamples, double weight)
+{
+  mobius::SampleAnchor anchor;
+  anchor.Weight = weight;
+  anchor.Source.resize(static_cast<Eigen::Index>(sourceSamples.size()), 3);
+  for (size_t s = 0; s < sourceSamples.size(); ++s)
+  {
+    anchor.Source.row(static_cast<Eigen::Index>(s)) =
+      (start * sourceSphere.row(sourceSamples[s]).transpose()).transpose();
+  }
+  anchor.Target.resize(static_cast<Eigen::Index>(targetSamples.size()), 3);
+  for (size_t t = 0; t < targetSamples.size(); ++t)
+  {
+    anchor.Target.row(static_cast<Eigen::Index>(t)) = targetSphere.row(targetSamples[t]);
+  }
+  return anchor;
+}
+
+// The point array MapStretch (mobius::EdgeStretch of the mapped points) and its
+// area-weighted mean in field data.
+void AddMapStretch(const MapInput& source, vtkPolyData* output)
+{
+  vtkDataArray* mapped = output->GetPointData()->GetArray("MappedPoints");
+  if (!mapped || mapped->GetNumberOfTuples() != source.Surface.rows())
+  {
+    return;
+  }
+  mobius::Points mappedPoints(source.Surface.rows(), 3);
+  for (vtkIdType i = 0; i < mapped->GetNumberOfTuples(); ++i)
+  {
+    mapped->GetTuple(i, mappedPoints.row(i).data());
+  }
+  const mobius::Vector stretch =
+    mobius::EdgeStretch(source.Surface, source.Triangles, mappedPoints);
+  vtkNew<vtkDoubleArray> array;
+  array->SetName("MapStretch");
+  array->SetNumberOfTuples(stretch.size());
+  for (vtkIdType i = 0; i < stretch.size(); ++i)
+  {
+    array->SetValue(i, stretch[i]);
+  }
+  output->GetPointData()->AddArray(array);
+  const mobius::Vector mass = mobius::LumpedMass(source.Surface, source.Triangles);
+  mobius::vtk::SetFieldValue(
+    output->GetFieldData(), "RefinementMeanStretch", stretch.dot(mass) / mass.sum());
 }
 
 void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector<double>& values)
@@ -267,18 +322,28 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     parameters.FullResolutionIterations = this->FullResolutionIterations;
     parameters.NumberOfThreads = threads;
 
-    // Every candidate up to the screening size; the one of the expected orientation with the
-    // most orthogonal functional map goes on.
+    // Every candidate up to the screening size, each held on its side of the sphere; the
+    // one of the expected orientation that keeps the curvature best goes on
+    // (mobius::ChooseCandidate).
     const std::vector<Matrix3> starts = CandidateStarts(inputs[0], this->SearchCandidates);
+    if (this->Candidate >= static_cast<int>(starts.size()))
+    {
+      vtkErrorMacro(<< "Candidate " << this->Candidate << " does not exist: the registration has "
+                    << starts.size() << " candidate" << (starts.size() == 1 ? "" : "s")
+                    << " (0.." << starts.size() - 1 << ").");
+      return 0;
+    }
     vtkDataArray* determinantArray = inputs[0]->GetFieldData()->GetArray("Determinant");
     const double bestDeterminant =
       determinantArray && determinantArray->GetComponent(0, 0) < 0 ? -1.0 : 1.0;
     const std::vector<mobius::Index>& samples = surfaces[0].Samples;
-    std::vector<double> residuals, coverage, orientation;
-    std::vector<double> determinants;
+    std::vector<bool> preserves;
+    std::vector<mobius::SampleAnchor> anchors;
     for (const Matrix3& start : starts)
     {
-      determinants.push_back(start.determinant() * bestDeterminant);
+      preserves.push_back(start.determinant() * bestDeterminant > 0);
+      anchors.push_back(SphereAnchor(start, maps[0].Sphere, samples, maps[1].Sphere,
+        surfaces[1].Samples, this->SphereAnchorWeight));
     }
     // The candidates are independent and each one's sample ZoomOut is too small (1000
     // samples) to keep several threads busy: one candidate per thread.
@@ -287,49 +352,57 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     oneThread.NumberOfThreads = 1;
     mobius::ParallelFor(static_cast<int>(starts.size()), threads, [&](int c, int) {
         mobius::ZoomOutParameters own = oneThread;
-        own.Orientation = this->RepairOrientation ? (determinants[c] > 0 ? 1 : -1) : 0;
+        own.Orientation = this->RepairOrientation ? (preserves[c] ? 1 : -1) : 0;
         screened[c] = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
           StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
-          own);
+          own, anchors[c]);
       });
     this->UpdateProgress(0.7);
     if (this->GetAbortExecute())
     {
       return 0;
     }
-    mobius::SampleMap best;
-    int bestCandidate = 0;
-    bool bestRightSide = false;
+    std::vector<bool> rightSide;
     for (size_t c = 0; c < starts.size(); ++c)
     {
-      residuals.push_back(screened[c].OrthogonalityResidual);
-      orientation.push_back(screened[c].OrientationAgreement);
-      coverage.push_back(screened[c].TargetCoverage);
-      // A map of the expected orientation beats one of the other; then the more orthogonal.
-      const bool rightSide = mobius::HasOrientation(screened[c], determinants[c] > 0);
-      if (c == 0 || (rightSide && !bestRightSide) ||
-        (rightSide == bestRightSide &&
-          screened[c].OrthogonalityResidual < best.OrthogonalityResidual))
-      {
-        bestRightSide = rightSide;
-        best = screened[c];
-        bestCandidate = static_cast<int>(c);
-      }
+      rightSide.push_back(mobius::HasOrientation(screened[c], preserves[c]));
     }
-    // A bilaterally symmetric shape can come out mapped onto the target's mirror image; the
-    // transform's determinant says which orientation the map should have.
-    const bool preserve = determinants[bestCandidate] > 0;
-    const bool reversed = !mobius::HasOrientation(best, preserve);
+    mobius::CandidateChoice choice = mobius::ChooseCandidate(screened, rightSide, surfaces[1],
+      this->CandidateCriterion == ORTHOGONALITY ? mobius::CandidateCriterion::Orthogonality
+                                                : mobius::CandidateCriterion::Curvature);
+    if (this->Candidate >= 0)
+    {
+      choice.Kept = this->Candidate;
+    }
+    else if (choice.RunnerUp >= 0 && choice.Margin < mobius::kNearEqualMargin)
+    {
+      vtkWarningMacro(<< "Candidates " << choice.Kept << " (kept) and " << choice.RunnerUp
+                      << " give different maps that keep the surfaces' curvature almost "
+                         "equally well (margin "
+                      << 100 * choice.Margin
+                      << "%): the map may be the wrong one of two, such as a body turned half a "
+                         "turn. Check it, and keep the other with Candidate = "
+                      << choice.RunnerUp << " (mobius-register --candidate " << choice.RunnerUp
+                      << ").");
+    }
+    const int bestCandidate = choice.Kept;
+    mobius::SampleMap best = screened[bestCandidate];
+    // A map that still has the wrong orientation (no candidate reached the right one) is
+    // retried from its low-frequency functional map with signs flipped.
+    const bool preserve = preserves[bestCandidate];
+    const bool reversed = !rightSide[bestCandidate];
     if (reversed && this->RepairOrientation)
     {
-      best = mobius::RepairOrientation(surfaces[0], surfaces[1], best, preserve, 9, parameters);
+      best = mobius::RepairOrientation(
+        surfaces[0], surfaces[1], best, preserve, 9, parameters, anchors[bestCandidate]);
     }
     if (parameters.FinalSize < this->BasisSize)
     {
       parameters.StartSize = mobius::NextBasisSize(parameters.FinalSize, parameters.Growth);
       parameters.FinalSize = this->BasisSize;
       parameters.Orientation = this->RepairOrientation ? (preserve ? 1 : -1) : 0;
-      best = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1], best.TargetVertex, parameters);
+      best = mobius::ZoomOutOnSamples(
+        surfaces[0], surfaces[1], best.TargetVertex, parameters, anchors[bestCandidate]);
     }
     const double candidateSeconds = lap();
     this->UpdateProgress(0.85);
@@ -367,9 +440,22 @@ int vtkCorrespondenceRefinement::ComputeOutput(
 
     vtkFieldData* fieldData = output->GetFieldData();
     mobius::vtk::SetFieldValue(fieldData, "RefinementCandidate", bestCandidate);
+    std::vector<double> residuals, coverage, orientation, curvature;
+    for (const mobius::SampleMap& map : screened)
+    {
+      residuals.push_back(map.OrthogonalityResidual);
+      coverage.push_back(map.TargetCoverage);
+      orientation.push_back(map.OrientationAgreement);
+      curvature.push_back(map.CurvatureDifference);
+    }
     SetFieldVector(fieldData, "CandidateOrthogonalityResiduals", residuals);
     SetFieldVector(fieldData, "CandidateTargetCoverage", coverage);
     SetFieldVector(fieldData, "CandidateOrientationAgreement", orientation);
+    SetFieldVector(fieldData, "CandidateCurvatureDifferences", curvature);
+    const double confidence[3] = { screened[bestCandidate].CurvatureDifference,
+      static_cast<double>(choice.RunnerUp), choice.Margin };
+    mobius::vtk::SetFieldValues(fieldData, "RefinementConfidence", confidence, 3);
+    AddMapStretch(maps[0], output);
     mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationAgreement", best.OrientationAgreement);
     mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationRepaired", reversed ? 1 : 0);
     mobius::vtk::SetFieldValue(
@@ -400,6 +486,9 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RepairOrientation: " << this->RepairOrientation << "\n";
   os << indent << "ConsistentMassShare: " << this->ConsistentMassShare << "\n";
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
+  os << indent << "SphereAnchorWeight: " << this->SphereAnchorWeight << "\n";
+  os << indent << "CandidateCriterion: " << this->CandidateCriterion << "\n";
+  os << indent << "Candidate: " << this->Candidate << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -14,10 +14,12 @@
  * Candidates: vtkSO3Register reports several well-separated transforms
  * (`CandidateTransforms`). Symmetric-looking shapes can make a wrong one score best (a
  * person's arms on the wrong side). With `SearchCandidates` on (default), the refinement
- * starts from each candidate up to `ScreeningBasisSize` functions, continues the one whose
- * functional map is closest to orthogonal
- * (an isometry has an orthogonal functional map; a start with parts on the wrong side
- * converges to a folded, non-orthogonal one) and reports every candidate's score.
+ * starts from each candidate up to `ScreeningBasisSize` functions, each held on the side
+ * its rotation put it by the aligned sphere coordinates (`SphereAnchorWeight`), and
+ * continues the one of the expected orientation whose images keep the source's smoothed
+ * mean curvature best (eigenfunctions cannot tell a body's front from its back, so the map
+ * of a body turned half a turn is as orthogonal as the right one; faces, toes and kneecaps
+ * tell them apart). `Candidate` keeps a given candidate instead.
  *
  * Inputs: port 0 `Source`, the output of vtkSO3Register (the source's spherical map,
  * aligned; its field data `Rotation` and `CandidateTransforms` are used when present);
@@ -34,6 +36,16 @@
  *   share of target samples it reaches;
  * - `CandidateOrientationAgreement` (per candidate): the share of sampled triangles whose
  *   image keeps its orientation (near 1 for a rotation's map, near 0 for a mirror image);
+ * - `CandidateCurvatureDifferences` (per candidate): the mean |H_source - H_target| of the
+ *   smoothed mean curvatures at the samples and their images, what the choice compares;
+ * - `RefinementConfidence` (3 values): the kept candidate's curvature difference, the
+ *   runner-up (the best other candidate of the expected orientation whose map differs;
+ *   -1 if none) and the margin, (runner-up's difference - kept's) / kept's: below 0.05
+ *   the two are near-equal and the map may be the wrong one of two (check it, and keep the
+ *   other with `Candidate`);
+ * - `RefinementMeanStretch`: the area-weighted mean of the point array `MapStretch`, per
+ *   vertex the mean |log| of how the map stretches the edges around it (0 for an isometry;
+ *   color the map by it to see where it can be trusted);
  * - `RefinementOrthogonalityResidual`, `RefinementOrientationAgreement` of the final map,
  *   `RefinementOrientationRepaired` (1 if the kept candidate came out mirrored and was
  *   repaired), `RefinementBasisSize`;
@@ -73,6 +85,12 @@ public:
   {
     TARGET = 0,
     SOURCE = 1
+  };
+
+  enum CandidateCriteria
+  {
+    CURVATURE = 0,
+    ORTHOGONALITY = 1
   };
 
   ///@{
@@ -160,6 +178,43 @@ public:
 
   ///@{
   /**
+   * Weight of the aligned unit-sphere coordinates beside the eigenfunction values in every
+   * nearest-point search of ZoomOut (0: none). The rotation found on the sphere cannot
+   * reflect, so these coordinates hold each candidate's map on the side its rotation put it,
+   * where the eigenfunctions alone let a right start slide into a body's front-back mirror
+   * image; the conformal map squeezes each limb into a small patch of the sphere, so they
+   * still let the large moves along limbs happen. Clamped to 0..100.
+   */
+  vtkSetClampMacro(SphereAnchorWeight, double, 0.0, 100.0);
+  vtkGetMacro(SphereAnchorWeight, double);
+  ///@}
+
+  ///@{
+  /**
+   * What tells the candidates of the expected orientation apart: CURVATURE (default), the
+   * smoothed mean curvature kept by the map, for registering two surfaces; ORTHOGONALITY,
+   * the functional map's orthogonality residual alone (intrinsic), for a surface's own
+   * mirror symmetry, where a pose can make another reflection an exact extrinsic symmetry
+   * (vtkSymmetryDetection uses it).
+   */
+  vtkSetClampMacro(CandidateCriterion, int, CURVATURE, ORTHOGONALITY);
+  vtkGetMacro(CandidateCriterion, int);
+  void SetCandidateCriterionToCurvature() { this->SetCandidateCriterion(CURVATURE); }
+  void SetCandidateCriterionToOrthogonality() { this->SetCandidateCriterion(ORTHOGONALITY); }
+  ///@}
+
+  ///@{
+  /**
+   * The candidate to keep: -1 (default) chooses (see the class description); 0..K-1 keeps
+   * candidate K of vtkSO3Register's `CandidateTransforms` (0 its best), for a map that came
+   * out wrong with a near-equal runner-up. A number beyond the candidates is an error.
+   */
+  vtkSetClampMacro(Candidate, int, -1, 63);
+  vtkGetMacro(Candidate, int);
+  ///@}
+
+  ///@{
+  /**
    * Finish the spectral map geometrically (default on): the source mesh, scaled to the
    * target's area, is deformed as rigidly as possible (ARAP) onto the target, starting from
    * the mapped points, by a few non-rigid ICP iterations, and each vertex is projected onto
@@ -222,6 +277,9 @@ protected:
   bool RepairOrientation = true;
   double ConsistentMassShare = 0.0;
   bool GeometricPolish = true;
+  double SphereAnchorWeight = 2.0;
+  int CandidateCriterion = CURVATURE;
+  int Candidate = -1;
   int OutputGeometry = TARGET;
   int NumberOfThreads = 0;
 

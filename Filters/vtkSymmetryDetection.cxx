@@ -265,6 +265,7 @@ int vtkSymmetryDetection::ComputeOutput(
     refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), this->BasisSize));
     refinement->SetGeometricPolish(this->GeometricPolish);
     refinement->SetOutputGeometryToSource();
+    refinement->SetCandidateCriterionToOrthogonality();
     refinement->SetNumberOfThreads(threads);
     symmetric = run(refinement, "refinement", 0.5, 0.95);
   }

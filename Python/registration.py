@@ -35,6 +35,7 @@ DEFAULT_OPTIONS = {
     "smoothing": 0.0005,          # heat-kernel smoothing time of the scale factors
     "transform": "rotation",      # rotation | reflection | both
     "candidates": 4,              # correlation peaks the refinement starts from
+    "candidate": None,            # the refinement's candidate to keep (mobius-register --candidate); None: it chooses
     "iterations": 100,            # maximum conformal flow steps
     "tolerance": 1e-4,            # conformal flow convergence tolerance
     "fill_holes": False,          # close holes instead of rejecting open meshes
@@ -223,7 +224,8 @@ def register(source, target, **options):
     Options (defaults as mobius-register's): refine=True, basis_size=80, polish=True (end the
     refinement with its geometric polish; False as --no-polish), resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
-    iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,
+    candidate=None (keep this candidate's refined map, 0..candidates-1, as --candidate, for a
+    map that came out turned while a warning named a near-equal runner-up), iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,
     allow_poor_maps=False, threads=0 (threads of each threaded filter, 0 to 1024; 0 is one
     per core this process may run on, at most VTK_SMP_MAX_THREADS when set; the result is
     the same for any count, and `fields["NumberOfThreadsUsed"]` says what ran).
@@ -241,6 +243,11 @@ def register(source, target, **options):
     resolution = int(options["resolution"])
     if resolution < 4 or resolution % 2:
         raise ValueError(f"resolution must be an even number >= 4, got {options['resolution']!r}")
+    candidate = options["candidate"]
+    if candidate is not None and (isinstance(candidate, bool) or not isinstance(candidate, (int, np.integer))
+                                  or not 0 <= candidate < int(options["candidates"])):
+        raise ValueError(f"candidate must be None or an integer from 0 to candidates - 1 "
+                         f"({int(options['candidates']) - 1}), got {candidate!r}")
     threads = options["threads"]
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 0 <= threads <= 1024:
         raise ValueError(f"threads must be an integer from 0 to 1024, got {threads!r}")
@@ -274,6 +281,7 @@ def register(source, target, **options):
         correspondence.SetStartBasisSize(min(correspondence.GetStartBasisSize(), basis_size))
         correspondence.SetScreeningBasisSize(min(correspondence.GetScreeningBasisSize(), basis_size))
         correspondence.SetGeometricPolish(bool(options["polish"]))
+        correspondence.SetCandidate(-1 if candidate is None else int(candidate))
     else:
         correspondence = errors.watch(vtkDenseCorrespondence())
     correspondence.SetNumberOfThreads(int(threads))

@@ -1,6 +1,7 @@
 #include "ZoomOut.h"
 
 #include "CotangentLaplacian.h"
+#include "MeanCurvature.h"
 #include "ParallelFor.h"
 #include "SurfaceSampling.h"
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace mobius
@@ -24,6 +26,18 @@ RowMatrix GatherRows(const RowMatrix& embedding, const std::vector<Index>& verti
     rows.row(static_cast<Index>(i)) = embedding.row(vertices[i]).head(columns);
   }
   return rows;
+}
+
+// Rows with the anchor's coordinates appended (weighted), or the rows as they are.
+RowMatrix Anchored(const RowMatrix& rows, const RowMatrix& anchor, double weight)
+{
+  if (weight == 0)
+  {
+    return rows;
+  }
+  RowMatrix out(rows.rows(), rows.cols() + anchor.cols());
+  out << rows, weight * anchor;
+  return out;
 }
 
 // Least-squares C with A C ~ B (A, B: samples x k): the functional map of a sample map.
@@ -65,6 +79,21 @@ double OrientationAgreement(const SpectralSurface& source, const SpectralSurface
   return counted > 0 ? static_cast<double>(agree) / counted : 0.0;
 }
 
+double CurvatureDifference(const SpectralSurface& source, const SpectralSurface& target,
+  const std::vector<Index>& targetVertex)
+{
+  if (source.Curvature.size() == 0 || target.Curvature.size() == 0 || targetVertex.empty())
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  double sum = 0;
+  for (size_t s = 0; s < targetVertex.size(); ++s)
+  {
+    sum += std::abs(source.Curvature[source.Samples[s]] - target.Curvature[targetVertex[s]]);
+  }
+  return sum / static_cast<double>(targetVertex.size());
+}
+
 int NextBasisSize(int size, double growth)
 {
   return size + std::max(1, static_cast<int>(size * growth));
@@ -94,6 +123,7 @@ void PrepareSpectralSurface(const Points& points, const Triangles& triangles,
 {
   surface.Positions = points;
   surface.Normals = AreaWeightedVertexNormals(points, triangles);
+  surface.Curvature = SmoothedMeanCurvature(points, triangles, kCurvatureSmoothingTime);
   surface.Faces = triangles;
   surface.Embedding = basis.Functions;
   surface.Eigenvalues = std::move(basis.Eigenvalues);
@@ -141,7 +171,8 @@ double ExpectedSideShare(const SpectralSurface& source, const SpectralSurface& t
 // first antisymmetric function, which enters early. True if it tried.
 bool KeepOrientation(const SpectralSurface& source, const SpectralSurface& target,
   const RowMatrix& sourceRows, const RowMatrix& targetRows, const Eigen::MatrixXd& c,
-  const ZoomOutParameters& parameters, std::vector<Index>& targetVertex)
+  const ZoomOutParameters& parameters, const SampleAnchor& anchor,
+  std::vector<Index>& targetVertex)
 {
   if (ExpectedSideShare(source, target, targetVertex, parameters.Orientation) >
     kOrientationDecided)
@@ -149,14 +180,15 @@ bool KeepOrientation(const SpectralSurface& source, const SpectralSurface& targe
     return false;
   }
   const int k = static_cast<int>(c.rows());
-  const RowMatrix a = sourceRows.leftCols(k);
+  const RowMatrix a = Anchored(sourceRows.leftCols(k), anchor.Source, anchor.Weight);
   double bestShare = 1.0 - kOrientationDecided;
   for (int row = 1; row < std::min(k, kOrientationRows + 1); ++row) // row 0: the constant
   {
     Eigen::MatrixXd flipped = c;
     flipped.row(row) *= -1;
-    const std::vector<Index> nearest =
-      NearestRows(a, targetRows.leftCols(k) * flipped.transpose(), parameters.NumberOfThreads);
+    const std::vector<Index> nearest = NearestRows(a,
+      Anchored(targetRows.leftCols(k) * flipped.transpose(), anchor.Target, anchor.Weight),
+      parameters.NumberOfThreads);
     std::vector<Index> map(nearest.size());
     for (size_t i = 0; i < nearest.size(); ++i)
     {
@@ -174,7 +206,8 @@ bool KeepOrientation(const SpectralSurface& source, const SpectralSurface& targe
 }
 
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
-  const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters)
+  const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters,
+  const SampleAnchor& anchor)
 {
   const int finalSize = std::min<int>(parameters.FinalSize,
     static_cast<int>(std::min(source.Embedding.cols(), target.Embedding.cols())));
@@ -195,7 +228,9 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     // (for an orthogonal C the same as comparing Phi_S C with Phi_T; for the shrunk C of a
     // noisy start it keeps the queries from collapsing onto the target's small rows).
     const RowMatrix candidates = targetRows.leftCols(k) * c.transpose();
-    const std::vector<Index> nearest = NearestRows(a, candidates, parameters.NumberOfThreads);
+    const std::vector<Index> nearest =
+      NearestRows(Anchored(a, anchor.Source, anchor.Weight),
+        Anchored(candidates, anchor.Target, anchor.Weight), parameters.NumberOfThreads);
     for (size_t i = 0; i < nearest.size(); ++i)
     {
       result.TargetVertex[i] = target.Samples[nearest[i]];
@@ -205,7 +240,8 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     // candidate choice: retrying at every iteration tripled the candidate search on CGAL's
     // man, one of whose candidates stays mirrored.
     if (parameters.Orientation != 0 && orientationTries < kOrientationTries &&
-      KeepOrientation(source, target, sourceRows, targetRows, c, parameters, result.TargetVertex))
+      KeepOrientation(
+        source, target, sourceRows, targetRows, c, parameters, anchor, result.TargetVertex))
     {
       ++orientationTries;
     }
@@ -230,6 +266,7 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
   result.TargetCoverage =
     target.Samples.empty() ? 0.0 : static_cast<double>(covered) / target.Samples.size();
   result.OrientationAgreement = OrientationAgreement(source, target, result.TargetVertex);
+  result.CurvatureDifference = CurvatureDifference(source, target, result.TargetVertex);
   return result;
 }
 
@@ -251,7 +288,7 @@ std::vector<Index> SampleMapFromFunctionalMap(const SpectralSurface& source,
 
 SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& reversed, bool preserveOrientation, int flips,
-  const ZoomOutParameters& parameters)
+  const ZoomOutParameters& parameters, const SampleAnchor& anchor)
 {
   const int k = std::min<int>(flips + 1, static_cast<int>(reversed.FunctionalMap.rows()));
   // The reversed map's functional map on the first k functions, refitted from its samples.
@@ -266,7 +303,8 @@ SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface
     Eigen::MatrixXd flipped = low;
     flipped.row(row) *= -1;
     SampleMap repaired = ZoomOutOnSamples(source, target,
-      SampleMapFromFunctionalMap(source, target, flipped, parameters.NumberOfThreads), continued);
+      SampleMapFromFunctionalMap(source, target, flipped, parameters.NumberOfThreads), continued,
+      anchor);
     if (HasOrientation(repaired, preserveOrientation) &&
       (!found || repaired.OrthogonalityResidual < best.OrthogonalityResidual))
     {

@@ -36,6 +36,9 @@ struct SpectralSurface
   VertexLists Corners;  ///< triangles around each vertex
   std::vector<Index> Samples;      ///< vertex indices, farthest-point order
   std::vector<Index> SampleLabels; ///< per vertex: position in Samples of its nearest sample
+  /// Smoothed mean curvature per vertex (SmoothedMeanCurvature, kCurvatureSmoothingTime):
+  /// compared between the surfaces to choose among candidate maps.
+  Vector Curvature;
   /// Triangles of samples (positions in Samples), one per mesh triangle whose corners have
   /// three different nearest samples: a coarse triangulation to check orientation on.
   std::vector<std::array<Index, 3>> SampleTriangles;
@@ -85,6 +88,27 @@ struct SampleMap
   /// Share of sample triangles whose image keeps their orientation (facing the same side of
   /// the surface): near 1 for an orientation-preserving map, near 0 for a mirror image.
   double OrientationAgreement = 0;
+  /// Mean over the source samples of |H_source - H_target at the image| (the surfaces'
+  /// smoothed mean curvatures): low when the map keeps the shape's features on their
+  /// counterparts, higher for a near-isometry that puts the front on the back. NaN when a
+  /// surface has no curvature.
+  double CurvatureDifference = 0;
+};
+
+/// Coordinates that hold a sample map near where its start put it: per source sample and per
+/// target sample a point in a space the two share (the unit spheres after the Möbius
+/// registration, the source's turned by the candidate's rotation), appended with `Weight` to
+/// the eigenfunction values in every nearest-row search. The spectral search alone cannot
+/// tell a body's front from its back: the first eigenfunctions of a human are nearly
+/// symmetric under both the left-right and the front-back reflection, and ZoomOut slides a
+/// right start into one of them. The rotation on the sphere cannot reflect, so the sphere
+/// keeps each side on its side, while it allows the large moves along limbs that the
+/// refinement must make (a conformal map squeezes a limb into a small patch of the sphere).
+struct SampleAnchor
+{
+  RowMatrix Source; ///< row s: source sample s
+  RowMatrix Target; ///< row t: target sample t
+  double Weight = 0; ///< 0: no anchor
 };
 
 /// ZoomOut from `initialTargetVertex` (one target vertex per source sample, e.g. read off
@@ -101,7 +125,8 @@ struct SampleMap
 /// and the best-oriented result is kept if at least 1 - kOrientationDecided of its
 /// triangles are on the expected side (at most kOrientationTries iterations per run).
 SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface& target,
-  const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters);
+  const std::vector<Index>& initialTargetVertex, const ZoomOutParameters& parameters,
+  const SampleAnchor& anchor = SampleAnchor());
 
 /// The sample map read off a functional map C (k x k, any k up to the basis size): each
 /// source sample goes to the target sample whose row of Phi_T C^T is nearest to its row of
@@ -117,7 +142,7 @@ std::vector<Index> SampleMapFromFunctionalMap(const SpectralSurface& source,
 /// or `reversed` itself if none does.
 SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& reversed, bool preserveOrientation, int flips,
-  const ZoomOutParameters& parameters);
+  const ZoomOutParameters& parameters, const SampleAnchor& anchor = SampleAnchor());
 
 /// Share of sample triangles on the expected side at or below which ZoomOutOnSamples
 /// calls an iteration's map decisively of the wrong orientation (a scrambled map, before
