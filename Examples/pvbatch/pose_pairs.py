@@ -21,7 +21,9 @@ from remeshed_copies import RemeshedCopy, Surface, interpolate
 REMESHED_SIZES = {"ra": 0.8, "rb": 1.2}
 # A mirror truth is written only where the rest mesh is bilaterally symmetric: reflected
 # across its fitted plane, its points lie within this (median, in sqrt(area)) of itself.
-MIRROR_RESIDUAL = 0.01
+# The cow and camel fit within 0.0001, the bear 0.0035, the man 0.0093 (his legs and arms
+# are not posed alike); the charging bull, 0.054, gets none.
+MIRROR_RESIDUAL = 0.02
 
 
 class Mesh:
