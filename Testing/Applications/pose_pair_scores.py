@@ -65,12 +65,13 @@ def geodesic(score, source, target, map_csv, truth):
 
 def verdict(direct, mirror, agreement):
     """right, mirrored (closer to the mirror truth, orientation reversed), turned (closer to
-    the mirror truth, orientation kept: a half turn of a bilateral shape) or wrong."""
+    the mirror truth, orientation kept: a half turn of a bilateral shape) or inaccurate (on
+    the right side, but not within RIGHT)."""
     if direct["mean"] <= RIGHT:
         return "right"
     if mirror is not None and mirror["mean"] < direct["mean"]:
         return "mirrored" if agreement < 0.5 else "turned"
-    return "wrong"
+    return "inaccurate"
 
 
 def run_pair(binary_dir, folder, row, work, options=()):
@@ -121,7 +122,7 @@ def main():
             results.append(run_pair(binary_dir, folder, row, work, options))
             print(table_row(results[-1]), flush=True)
     means = [r["direct"]["mean"] for r in results if "direct" in r]
-    counts = {v: sum(r["verdict"] == v for r in results) for v in ("right", "mirrored", "turned", "wrong", "refused")}
+    counts = {v: sum(r["verdict"] == v for r in results) for v in ("right", "mirrored", "turned", "inaccurate", "refused")}
     print(f"\n{len(results)} pairs: " + ", ".join(f"{n} {v}" for v, n in counts.items()) +
           (f"; geodesic mean over pairs {np.mean(means):.4f}, median pair {np.median(means):.4f}" if means else ""))
 
