@@ -65,8 +65,8 @@ def geodesic(score, source, target, map_csv, truth):
 
 def verdict(direct, mirror, agreement):
     """right, mirrored (closer to the mirror truth, orientation reversed), turned (closer to
-    the mirror truth, orientation kept: a half turn of a bilateral shape) or inaccurate (on
-    the right side, but not within RIGHT)."""
+    the mirror truth, orientation kept: a half turn of a bilateral shape) or inaccurate (not
+    within RIGHT, and nearer the direct truth, or without a mirror truth to tell)."""
     if direct["mean"] <= RIGHT:
         return "right"
     if mirror is not None and mirror["mean"] < direct["mean"]:
