@@ -85,7 +85,10 @@ def main():
     os.makedirs(output, exist_ok=True)
     if poses:
         import pose_pairs  # VTK's Python modules only when asked for
-        pose_pairs.write_collection(output, arguments[1:], read_off, write_off)
+        try:
+            pose_pairs.write_collection(output, arguments[1:], read_off, write_off)
+        except ValueError as error:  # no skeleton for the mesh, an implausible pose, ...
+            raise SystemExit(f"make_test_collection.py: {error}")
     else:
         bent_collection(output, arguments[1:])
 
