@@ -19,7 +19,9 @@ Per pair, with the geodesic error over sqrt(target area) (mobius-score):
   - mean against the direct truth at most half the mean against the mirror truth: a right
     map of the man scores about 0.6 against the mirror truth, a turned one about 0.1 against
     it and 0.65 against the direct truth;
-  - at least 90% of the source's area keeps its orientation (a mirror image keeps almost none).
+  - at least 80% of the source's area keeps its orientation: a mirror image keeps almost
+    none; a right map of the crouching man keeps 89-90% (its tightly bent knees and hips
+    fold some mapped triangles over), the other right maps 92-100%.
 
 Usage: test_pose_pairs.py BINARY_DIR EXAMPLES_PVBATCH_DIR MESH_DIR WORK_DIR
 """
@@ -90,7 +92,7 @@ for row in rows:
     check(direct["mean"] <= 0.5 * mirror["mean"],
           f"{pair}: not clearly nearer the direct truth than the mirror truth: {direct['mean']:.4f} "
           f"against {mirror['mean']:.4f} ({result['verdict']})")
-    check(result["orientation"] >= 0.9, f"{pair}: orientation kept on {100 * result['orientation']:.0f}% of the area < 90%")
+    check(result["orientation"] >= 0.8, f"{pair}: orientation kept on {100 * result['orientation']:.0f}% of the area < 80%")
 
 print(f"{len(failures)} failed")
 sys.exit(1 if failures else 0)
