@@ -49,7 +49,7 @@ const char* const DatasetUsage =
   "                      writes them\n"
   "  --csv FILE          also write one row per pair: source, target, error, mirror_error,\n"
   "                      mirrored, euclidean_error, seconds, score_seconds, kept_candidate,\n"
-  "                      candidates, orientation_agreement, unmapped_samples\n"
+  "                      candidates, orientation_agreement, unmapped_samples, failure\n"
   "  --errors DIR        also write DIR/X-Y.csv per pair, one row per sample: sample,\n"
   "                      source_vertex, mapped_vertex, true_vertex, error, mirror_vertex,\n"
   "                      mirror_error (vertices 0-based as in mobius-register's CSV, errors\n"
@@ -78,6 +78,7 @@ struct DatasetOptions
   unsigned long long Seed = 1;
   bool Quiet = false;
   PipelineOptions Pipeline;
+  std::string RegistrationOption; // the first one given (not --threads), for the --maps check
 };
 
 struct PairScore
@@ -116,6 +117,10 @@ int ParseOptions(int argc, char* argv[], DatasetOptions& options)
     }
     if (pipelineOption)
     {
+      if (argument != "--threads" && options.RegistrationOption.empty())
+      {
+        options.RegistrationOption = argument;
+      }
       continue;
     }
     auto value = [&](std::string& out) {
@@ -185,6 +190,11 @@ int ParseOptions(int argc, char* argv[], DatasetOptions& options)
   if (options.PairsPath.empty() && !options.AllPairs && options.RandomCount == 0)
   {
     return UsageError("--dataset needs pairs: --pairs FILE, --all or --random N");
+  }
+  if (!options.MapsFolder.empty() && !options.RegistrationOption.empty())
+  {
+    return UsageError(options.RegistrationOption +
+      " has no effect with --maps: the maps were computed before");
   }
   if (options.AllPairs && options.RandomCount > 0)
   {
