@@ -135,6 +135,7 @@ if direct and swapped:
           and 0.5 < float(direct["orientation_agreement"]) <= 1, "refinement's candidate figures")
     check(float(direct["score_seconds"]) < 1.0, f"scoring took {direct['score_seconds']} s")
     check(direct["unmapped_samples"] == "0", "every sample mapped")
+    check(direct["geodesics"] == "shortened", "a pair below 20: shortened geodesics")
 check("| cow | copy |" in out and "| pairs | mean | median | > 10 |" in out
       and "edge paths" in out and "| 2 |" in out and "1 of 2" in out, "the tables")
 
@@ -181,6 +182,9 @@ if identity and direct:
     twin = identity[("copy", "swapped")]
     check(float(twin["mirror_error"]) == 0 and twin["mirrored"] == "1" and float(twin["error"]) > 15,
           f"identity map against swapped truths: {twin}")
+    # Its error: the same distances as the correct map's mirror error, with the copy's
+    # identity in place of the registration (near the identity): close, not equal.
+    check(abs(float(twin["error"]) - float(direct["mirror_error"])) < 0.5, "identity vs registration")
 
 
 def random_pairs(seed):

@@ -265,6 +265,7 @@ double EdgePathGeodesics::Distance(
   const SurfacePoint& from, const SurfacePoint& to, Workspace& workspace) const
 {
   workspace.LastSettled = 0;
+  workspace.LastSearched = false;
   if (!this->IsValid(from) || !this->IsValid(to))
   {
     return std::numeric_limits<double>::quiet_NaN();
@@ -289,6 +290,7 @@ double EdgePathGeodesics::Distance(
   Index fromVertex, const SurfacePoint& to, Workspace& workspace) const
 {
   workspace.LastSettled = 0;
+  workspace.LastSearched = false;
   if (fromVertex < 0 || fromVertex >= this->Points_.rows() || !this->IsValid(to))
   {
     return std::numeric_limits<double>::quiet_NaN();
@@ -308,6 +310,7 @@ double EdgePathGeodesics::Distance(
 double EdgePathGeodesics::Distance(Index fromVertex, Index toVertex, Workspace& workspace) const
 {
   workspace.LastSettled = 0;
+  workspace.LastSearched = false;
   const Index n = this->Points_.rows();
   if (fromVertex < 0 || fromVertex >= n || toVertex < 0 || toVertex >= n)
   {
@@ -323,6 +326,31 @@ double EdgePathGeodesics::Distance(Index fromVertex, Index toVertex, Workspace& 
     return Infinity;
   }
   return this->Distance(fromVertex, to, workspace);
+}
+
+//------------------------------------------------------------------------------
+bool EdgePathGeodesics::LastPath(
+  Index toVertex, const Workspace& workspace, std::vector<Index>& path) const
+{
+  path.clear();
+  if (!workspace.LastSearched || toVertex < 0 ||
+    toVertex >= static_cast<Index>(workspace.Parent.size()))
+  {
+    return false;
+  }
+  // The chain of parents set by the last search (a vertex it never reached has none: the
+  // chain from toVertex must end at a seed within as many steps as there are vertices).
+  for (Index v = toVertex; v >= 0; v = workspace.Parent[v])
+  {
+    path.push_back(v);
+    if (static_cast<Index>(path.size()) > this->Points_.rows())
+    {
+      path.clear();
+      return false;
+    }
+  }
+  std::reverse(path.begin(), path.end());
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -409,9 +437,12 @@ double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
   if (static_cast<Index>(workspace.Distance.size()) != n)
   {
     workspace.Distance.assign(n, Infinity);
+    workspace.Parent.assign(n, -1);
     workspace.Touched.clear();
     workspace.Heap.clear();
   }
+  workspace.LastSearched = true;
+  std::vector<std::int32_t>& parent = workspace.Parent;
   std::vector<double>& distance = workspace.Distance;
   std::vector<std::int32_t>& touched = workspace.Touched;
   std::vector<Workspace::HeapEntry>& heap = workspace.Heap;
@@ -487,6 +518,7 @@ double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
         touched.push_back(v);
       }
       distance[v] = seedDistance[s];
+      parent[v] = -1;
       heap.push_back({ seedDistance[s] + heuristic(v), seedDistance[s], v });
       std::push_heap(heap.begin(), heap.end(), greater);
     }
@@ -537,6 +569,7 @@ double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
           touched.push_back(u);
         }
         distance[u] = candidate;
+        parent[u] = v;
         const double key = candidate + heuristic(u);
         if (key < best)
         {

@@ -100,6 +100,9 @@ public:
     std::vector<double> Distance;
     std::vector<std::int32_t> Touched;
     std::vector<HeapEntry> Heap;
+    /// The vertex each touched vertex was reached from (-1 for a seed), for LastPath.
+    std::vector<std::int32_t> Parent;
+    bool LastSearched = false; // false: the last query took the straight segment
     Index LastSettled = 0;
   };
 
@@ -121,6 +124,14 @@ public:
   /// A* (true, the default) or plain Dijkstra (false) with the same stopping rule; both give
   /// the same distances, Dijkstra settles more vertices. For tests and measurements.
   void SetUseAStar(bool useAStar) { this->UseAStar = useAStar; }
+
+  /// The vertices of the edge path the last query to vertex `toVertex` found, from its start
+  /// to toVertex. False if the last query searched nothing (its ends shared a triangle, and
+  /// the straight segment was the answer) or did not reach toVertex.
+  bool LastPath(Index toVertex, const Workspace& workspace, std::vector<Index>& path) const;
+
+  const Points& GetPoints() const { return this->Points_; }
+  const Triangles& GetTriangles() const { return this->Triangles_; }
 
   /// Landmarks for the A* bound (ALT, Goldberg & Harrelson 2005): `count` vertices chosen by
   /// farthest-point sampling along edge paths, with their edge-path distances to every

@@ -48,8 +48,8 @@ Index NearestCorner(
 
 //------------------------------------------------------------------------------
 bool ScoreSamples(const EdgePathGeodesics& target, const std::vector<Index>& mapped,
-  const std::vector<Index>& truth, int numberOfThreads, std::vector<double>& errors,
-  std::string& error)
+  const std::vector<Index>& truth, const SampleGeodesics& geodesics, int numberOfThreads,
+  std::vector<double>& errors, bool& shortened, std::string& error)
 {
   const Index n = target.GetNumberOfPoints();
   if (mapped.size() != truth.size())
@@ -77,14 +77,32 @@ bool ScoreSamples(const EdgePathGeodesics& target, const std::vector<Index>& map
   errors.assign(mapped.size(), std::numeric_limits<double>::quiet_NaN());
   const int count = static_cast<int>(mapped.size());
   const int threads = std::max(1, std::min(ResolveThreadCount(numberOfThreads), count));
-  std::vector<EdgePathGeodesics::Workspace> workspaces(threads);
-  ParallelFor(count, threads, [&](int k, int thread) {
-    if (mapped[k] >= 0)
-    {
-      errors[k] = target.Distance(truth[k], mapped[k], workspaces[thread]) / scale;
-    }
-  });
-
+  // Edge paths first; a pair that scores well enough is measured again with shortened paths.
+  CorridorGeodesics corridor;
+  std::vector<CorridorGeodesics::Workspace> workspaces(threads);
+  auto measure = [&](int steinerPoints) {
+    corridor.Build(target, steinerPoints);
+    ParallelFor(count, threads, [&](int k, int thread) {
+      if (mapped[k] >= 0)
+      {
+        errors[k] = corridor.Distance(truth[k], mapped[k], workspaces[thread]) / scale;
+      }
+    });
+  };
+  measure(0);
+  shortened = false;
+  double sum = 0.0;
+  Index scored = 0;
+  for (double e : errors)
+  {
+    sum += std::isnan(e) ? 0.0 : e;
+    scored += std::isnan(e) ? 0 : 1;
+  }
+  if (geodesics.SteinerPoints > 0 && scored > 0 && sum / scored <= geodesics.ShortenPairsUpTo)
+  {
+    measure(geodesics.SteinerPoints);
+    shortened = true;
+  }
   return true;
 }
 
