@@ -127,9 +127,11 @@ if direct and swapped:
     check(e < 1.0, f"correct map: error {e} (x100) should be near 0")
     check(m > 15.0, f"correct map: mirror error {m} should be large")
     check(direct["mirrored"] == "0" and swapped["mirrored"] == "1", "mirrored flags")
-    # The same map against swapped truths: the figures swap, to the digit.
-    check(swapped["error"] == direct["mirror_error"] and swapped["mirror_error"] == direct["error"],
-          f"swapped truths: {swapped['error']} {swapped['mirror_error']}")
+    # The same map against swapped truths: the figures swap, but errors below 20 are
+    # measured by shortened paths and mirror errors by edge paths (a few % longer).
+    se, sm = float(swapped["error"]), float(swapped["mirror_error"])
+    check(swapped["geodesics"] == "shortened" and 0.9 * m < se <= m and e <= sm < 1.2 * e + 0.01,
+          f"swapped truths: {se} {sm} against {m} {e}")
     check(float(direct["euclidean_error"]) <= e + 1e-9, "Euclidean <= geodesic")
     check(direct["kept_candidate"] != "" and int(direct["candidates"]) >= 1
           and 0.5 < float(direct["orientation_agreement"]) <= 1, "refinement's candidate figures")
@@ -184,7 +186,7 @@ if identity and direct:
           f"identity map against swapped truths: {twin}")
     # Its error: the same distances as the correct map's mirror error, with the copy's
     # identity in place of the registration (near the identity): close, not equal.
-    check(abs(float(twin["error"]) - float(direct["mirror_error"])) < 0.5, "identity vs registration")
+    check(abs(float(twin["error"]) - float(swapped["error"])) < 0.5, "identity vs registration")
 
 
 def random_pairs(seed):
