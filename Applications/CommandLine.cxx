@@ -143,6 +143,171 @@ std::string UsageText()
   return text.str();
 }
 
+bool ParsePipelineOption(
+  int argc, char* argv[], int& i, PipelineOptions& pipeline, bool& recognized, std::string& error)
+{
+  const std::string option = argv[i];
+  auto value = [&](std::string& out) {
+    if (i + 1 >= argc)
+    {
+      error = option + " needs a value";
+      return false;
+    }
+    out = argv[++i];
+    return true;
+  };
+  std::string text;
+  recognized = true;
+  if (option == "--no-polish")
+  {
+    pipeline.GeometricPolish = false;
+  }
+  else if (option == "--no-center-flow")
+  {
+    pipeline.CenterBetweenSteps = false;
+  }
+  else if (option == "--fill-holes")
+  {
+    pipeline.FillHoles = true;
+  }
+  else if (option == "--keep-largest-component")
+  {
+    pipeline.KeepLargestComponent = true;
+  }
+  else if (option == "--allow-poor-maps")
+  {
+    pipeline.AllowPoorMaps = true;
+  }
+  else if (option == "--refine")
+  {
+    if (!value(text) || (text != "spectral" && text != "none"))
+    {
+      error = error.empty() ? "--refine must be spectral or none, not '" + text + "'" : error;
+      return false;
+    }
+    pipeline.Refine = text == "spectral";
+  }
+  else if (option == "--threads")
+  {
+    int number = 0;
+    if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 1024)
+    {
+      error = error.empty() ? "--threads needs an integer from 0 to 1024, not '" + text + "'" : error;
+      return false;
+    }
+    pipeline.NumberOfThreads = number;
+  }
+  else if (option == "--basis-size")
+  {
+    int number = 0;
+    if (!value(text) || !ParseInteger(text, number) || number < 2 || number > 500)
+    {
+      error = error.empty() ? "--basis-size needs an integer from 2 to 500, not '" + text + "'" : error;
+      return false;
+    }
+    pipeline.BasisSize = number;
+  }
+  else if (option == "--degree")
+  {
+    // vtkMobiusCenter clamps its Degree to 1..8; a value outside is refused, not clamped.
+    int number = 0;
+    if (!value(text) || !ParseInteger(text, number) || number < 1 || number > 8)
+    {
+      error = error.empty() ? "--degree needs an integer from 1 (the paper's Moebius centering) "
+                              "to 8, not '" + text + "'"
+                            : error;
+      return false;
+    }
+    pipeline.CenteringDegree = number;
+  }
+  else if (option == "--iterations" || option == "--resolution" || option == "--candidates")
+  {
+    int number = 0;
+    if (!value(text) || !ParseInteger(text, number) || number < 1)
+    {
+      error = error.empty() ? option + " needs a positive integer, not '" + text + "'" : error;
+      return false;
+    }
+    if (option == "--resolution" && (number < 4 || number % 2 != 0))
+    {
+      error = "--resolution must be even and at least 4, not " + text;
+      return false;
+    }
+    // Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
+    if (option == "--resolution" && number > vtkSO3Register::LargestResolution())
+    {
+      std::ostringstream message;
+      message << "--resolution " << number << " needs about "
+              << vtkSO3Register::EstimateMemory(number) / 1e9
+              << " GB, more than this machine's memory; at most "
+              << vtkSO3Register::LargestResolution() << " fits";
+      error = message.str();
+      return false;
+    }
+    (option == "--iterations"       ? pipeline.FlowIterations
+        : option == "--resolution" ? pipeline.Resolution
+                                   : pipeline.NumberOfCandidates) = number;
+  }
+  else if (option == "--candidate")
+  {
+    int number = 0;
+    if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 63)
+    {
+      error = error.empty() ? "--candidate needs an integer from 0 to 63, not '" + text + "'" : error;
+      return false;
+    }
+    pipeline.Candidate = number;
+  }
+  else if (option == "--tolerance" || option == "--smoothing")
+  {
+    // NaN passes every comparison and an infinite or huge smoothing time wipes out the
+    // signals (exp(-l(l+1) t) leaves nothing of degree 1 and up well before t = 1): the
+    // run would silently return garbage. A relative change above 1 is no tolerance either.
+    double number = 0;
+    if (!value(text) || !ParseNumber(text, number) || !std::isfinite(number) || number < 0 ||
+      number > 1)
+    {
+      error = error.empty() ? option + " needs a number from 0 to 1, not '" + text + "'" : error;
+      return false;
+    }
+    (option == "--tolerance" ? pipeline.FlowTolerance
+                             : pipeline.SmoothingTime) = number;
+  }
+  else if (option == "--transform")
+  {
+    if (!value(text))
+    {
+      return false;
+    }
+    const std::vector<std::string> modes = { "rotation", "reflection", "both" };
+    int mode = -1;
+    for (size_t m = 0; m < modes.size(); ++m)
+    {
+      mode = text == modes[m] ? static_cast<int>(m) : mode;
+    }
+    if (mode < 0)
+    {
+      error = "--transform must be rotation, reflection or both, not '" + text + "'";
+      return false;
+    }
+    pipeline.TransformMode = mode;
+  }
+  else if (option == "--output-geometry")
+  {
+    if (!value(text) || (text != "target" && text != "source"))
+    {
+      error = error.empty() ? "--output-geometry must be target or source, not '" + text + "'" : error;
+      return false;
+    }
+    pipeline.OutputGeometry = text == "target" ? 0 : 1;
+  }
+  else
+  {
+    recognized = false;
+  }
+  return true;
+}
+
 bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error)
 {
   std::vector<std::string> positional;
@@ -159,6 +324,15 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
       return true;
     };
     std::string text;
+    bool pipelineOption = false;
+    if (!ParsePipelineOption(argc, argv, i, commandLine.Pipeline, pipelineOption, error))
+    {
+      return false;
+    }
+    if (pipelineOption)
+    {
+      continue;
+    }
     if (option == "-h" || option == "--help")
     {
       commandLine.Help = true;
@@ -240,26 +414,6 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
     {
       commandLine.Pipeline.Centering = false;
     }
-    else if (option == "--no-polish")
-    {
-      commandLine.Pipeline.GeometricPolish = false;
-    }
-    else if (option == "--no-center-flow")
-    {
-      commandLine.Pipeline.CenterBetweenSteps = false;
-    }
-    else if (option == "--fill-holes")
-    {
-      commandLine.Pipeline.FillHoles = true;
-    }
-    else if (option == "--keep-largest-component")
-    {
-      commandLine.Pipeline.KeepLargestComponent = true;
-    }
-    else if (option == "--allow-poor-maps")
-    {
-      commandLine.Pipeline.AllowPoorMaps = true;
-    }
     else if (option == "-o" || option == "--output")
     {
       if (!value(commandLine.Output))
@@ -273,129 +427,6 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
       {
         return false;
       }
-    }
-    else if (option == "--refine")
-    {
-      if (!value(text) || (text != "spectral" && text != "none"))
-      {
-        error = error.empty() ? "--refine must be spectral or none, not '" + text + "'" : error;
-        return false;
-      }
-      commandLine.Pipeline.Refine = text == "spectral";
-    }
-    else if (option == "--threads")
-    {
-      int number = 0;
-      if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 1024)
-      {
-        error = error.empty() ? "--threads needs an integer from 0 to 1024, not '" + text + "'" : error;
-        return false;
-      }
-      commandLine.Pipeline.NumberOfThreads = number;
-    }
-    else if (option == "--basis-size")
-    {
-      int number = 0;
-      if (!value(text) || !ParseInteger(text, number) || number < 2 || number > 500)
-      {
-        error = error.empty() ? "--basis-size needs an integer from 2 to 500, not '" + text + "'" : error;
-        return false;
-      }
-      commandLine.Pipeline.BasisSize = number;
-    }
-    else if (option == "--degree")
-    {
-      // vtkMobiusCenter clamps its Degree to 1..8; a value outside is refused, not clamped.
-      int number = 0;
-      if (!value(text) || !ParseInteger(text, number) || number < 1 || number > 8)
-      {
-        error = error.empty() ? "--degree needs an integer from 1 (the paper's Moebius centering) "
-                                "to 8, not '" + text + "'"
-                              : error;
-        return false;
-      }
-      commandLine.Pipeline.CenteringDegree = number;
-    }
-    else if (option == "--iterations" || option == "--resolution" || option == "--candidates")
-    {
-      int number = 0;
-      if (!value(text) || !ParseInteger(text, number) || number < 1)
-      {
-        error = error.empty() ? option + " needs a positive integer, not '" + text + "'" : error;
-        return false;
-      }
-      if (option == "--resolution" && (number < 4 || number % 2 != 0))
-      {
-        error = "--resolution must be even and at least 4, not " + text;
-        return false;
-      }
-      // Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
-      if (option == "--resolution" && number > vtkSO3Register::LargestResolution())
-      {
-        std::ostringstream message;
-        message << "--resolution " << number << " needs about "
-                << vtkSO3Register::EstimateMemory(number) / 1e9
-                << " GB, more than this machine's memory; at most "
-                << vtkSO3Register::LargestResolution() << " fits";
-        error = message.str();
-        return false;
-      }
-      (option == "--iterations"       ? commandLine.Pipeline.FlowIterations
-          : option == "--resolution" ? commandLine.Pipeline.Resolution
-                                     : commandLine.Pipeline.NumberOfCandidates) = number;
-    }
-    else if (option == "--candidate")
-    {
-      int number = 0;
-      if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 63)
-      {
-        error = error.empty() ? "--candidate needs an integer from 0 to 63, not '" + text + "'" : error;
-        return false;
-      }
-      commandLine.Pipeline.Candidate = number;
-    }
-    else if (option == "--tolerance" || option == "--smoothing")
-    {
-      // NaN passes every comparison and an infinite or huge smoothing time wipes out the
-      // signals (exp(-l(l+1) t) leaves nothing of degree 1 and up well before t = 1): the
-      // run would silently return garbage. A relative change above 1 is no tolerance either.
-      double number = 0;
-      if (!value(text) || !ParseNumber(text, number) || !std::isfinite(number) || number < 0 ||
-        number > 1)
-      {
-        error = error.empty() ? option + " needs a number from 0 to 1, not '" + text + "'" : error;
-        return false;
-      }
-      (option == "--tolerance" ? commandLine.Pipeline.FlowTolerance
-                               : commandLine.Pipeline.SmoothingTime) = number;
-    }
-    else if (option == "--transform")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      const std::vector<std::string> modes = { "rotation", "reflection", "both" };
-      int mode = -1;
-      for (size_t m = 0; m < modes.size(); ++m)
-      {
-        mode = text == modes[m] ? static_cast<int>(m) : mode;
-      }
-      if (mode < 0)
-      {
-        error = "--transform must be rotation, reflection or both, not '" + text + "'";
-        return false;
-      }
-      commandLine.Pipeline.TransformMode = mode;
-    }
-    else if (option == "--output-geometry")
-    {
-      if (!value(text) || (text != "target" && text != "source"))
-      {
-        error = error.empty() ? "--output-geometry must be target or source, not '" + text + "'" : error;
-        return false;
-      }
-      commandLine.Pipeline.OutputGeometry = text == "target" ? 0 : 1;
     }
     else if (option.size() > 1 && option[0] == '-')
     {

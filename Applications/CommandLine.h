@@ -28,6 +28,13 @@ struct CommandLine
 /// out of range.
 bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error);
 
+/// Parses the pipeline option at argv[i] (conformal map, centering degree, registration,
+/// refinement, --threads), advancing i past its value: the options mobius-register and
+/// mobius-score's dataset mode share. `recognized` is false for any other argument (then
+/// nothing is read). Returns false with `error` for a missing value or one out of range.
+bool ParsePipelineOption(
+  int argc, char* argv[], int& i, PipelineOptions& pipeline, bool& recognized, std::string& error);
+
 /// The --help text, with the defaults.
 std::string UsageText();
 

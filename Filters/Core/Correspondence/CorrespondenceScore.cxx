@@ -167,6 +167,9 @@ bool EdgePathGeodesics::Build(const Points& points, const Triangles& triangles, 
 {
   this->FirstNeighbor.clear();
   this->Neighbor.clear();
+  this->VertexCorner.clear();
+  this->LandmarkDistance.clear();
+  this->Landmarks = 0;
   this->EdgeLength.clear();
   this->SurfaceArea = 0.0;
   this->Points_.resize(0, 3);
@@ -233,6 +236,15 @@ bool EdgePathGeodesics::Build(const Points& points, const Triangles& triangles, 
   {
     this->FirstNeighbor[i + 1] += this->FirstNeighbor[i];
   }
+  this->VertexCorner.assign(n, SurfacePoint());
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->VertexCorner[triangles(t, k)].Triangle = t;
+      this->VertexCorner[triangles(t, k)].Barycentric = Eigen::Vector3d::Unit(k);
+    }
+  }
   this->Points_ = points;
   this->Triangles_ = triangles;
   this->SurfaceArea = area;
@@ -253,6 +265,7 @@ double EdgePathGeodesics::Distance(
   const SurfacePoint& from, const SurfacePoint& to, Workspace& workspace) const
 {
   workspace.LastSettled = 0;
+  workspace.LastSearched = false;
   if (!this->IsValid(from) || !this->IsValid(to))
   {
     return std::numeric_limits<double>::quiet_NaN();
@@ -277,6 +290,7 @@ double EdgePathGeodesics::Distance(
   Index fromVertex, const SurfacePoint& to, Workspace& workspace) const
 {
   workspace.LastSettled = 0;
+  workspace.LastSearched = false;
   if (fromVertex < 0 || fromVertex >= this->Points_.rows() || !this->IsValid(to))
   {
     return std::numeric_limits<double>::quiet_NaN();
@@ -293,6 +307,128 @@ double EdgePathGeodesics::Distance(
 }
 
 //------------------------------------------------------------------------------
+double EdgePathGeodesics::Distance(Index fromVertex, Index toVertex, Workspace& workspace) const
+{
+  workspace.LastSettled = 0;
+  workspace.LastSearched = false;
+  const Index n = this->Points_.rows();
+  if (fromVertex < 0 || fromVertex >= n || toVertex < 0 || toVertex >= n)
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  if (fromVertex == toVertex)
+  {
+    return 0.0;
+  }
+  const SurfacePoint& to = this->VertexCorner[toVertex];
+  if (to.Triangle < 0 || this->VertexCorner[fromVertex].Triangle < 0)
+  {
+    return Infinity;
+  }
+  return this->Distance(fromVertex, to, workspace);
+}
+
+//------------------------------------------------------------------------------
+bool EdgePathGeodesics::LastPath(
+  Index toVertex, const Workspace& workspace, std::vector<Index>& path) const
+{
+  path.clear();
+  if (!workspace.LastSearched || toVertex < 0 ||
+    toVertex >= static_cast<Index>(workspace.Parent.size()))
+  {
+    return false;
+  }
+  // The chain of parents set by the last search (a vertex it never reached has none: the
+  // chain from toVertex must end at a seed within as many steps as there are vertices).
+  for (Index v = toVertex; v >= 0; v = workspace.Parent[v])
+  {
+    path.push_back(v);
+    if (static_cast<Index>(path.size()) > this->Points_.rows())
+    {
+      path.clear();
+      return false;
+    }
+  }
+  std::reverse(path.begin(), path.end());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void EdgePathGeodesics::SearchAll(const std::array<std::int32_t, 3>& seeds, int seedCount,
+  std::vector<double>& distance) const
+{
+  using Entry = std::pair<double, std::int32_t>;
+  std::vector<Entry> heap;
+  const auto greater = [](const Entry& a, const Entry& b) { return a.first > b.first; };
+  distance.assign(this->Points_.rows(), Infinity);
+  for (int s = 0; s < seedCount; ++s)
+  {
+    distance[seeds[s]] = 0.0;
+    heap.emplace_back(0.0, seeds[s]);
+  }
+  std::make_heap(heap.begin(), heap.end(), greater);
+  while (!heap.empty())
+  {
+    std::pop_heap(heap.begin(), heap.end(), greater);
+    const auto [g, v] = heap.back();
+    heap.pop_back();
+    if (g > distance[v])
+    {
+      continue;
+    }
+    for (std::int32_t e = this->FirstNeighbor[v]; e < this->FirstNeighbor[v + 1]; ++e)
+    {
+      const std::int32_t u = this->Neighbor[e];
+      if (g + this->EdgeLength[e] < distance[u])
+      {
+        distance[u] = g + this->EdgeLength[e];
+        heap.emplace_back(distance[u], u);
+        std::push_heap(heap.begin(), heap.end(), greater);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void EdgePathGeodesics::BuildLandmarks(int count)
+{
+  const Index n = this->Points_.rows();
+  this->LandmarkDistance.clear();
+  this->Landmarks = 0;
+  if (count <= 0 || n == 0)
+  {
+    return;
+  }
+  count = static_cast<int>(std::min<Index>(count, n));
+  this->LandmarkDistance.resize(static_cast<size_t>(count) * n);
+  // Farthest-point sampling: the first landmark is the vertex farthest from vertex 0, each
+  // next one the vertex farthest from those chosen (a vertex another component holds is
+  // infinitely far, so every component gets one while landmarks last).
+  std::vector<double> distance, nearest(n, Infinity);
+  this->SearchAll({ 0, 0, 0 }, 1, distance);
+  auto farthest = [&](const std::vector<double>& from) {
+    std::int32_t best = 0;
+    for (Index v = 1; v < n; ++v)
+    {
+      best = from[v] > from[best] ? static_cast<std::int32_t>(v) : best;
+    }
+    return best;
+  };
+  std::int32_t next = farthest(distance);
+  for (int l = 0; l < count; ++l)
+  {
+    this->SearchAll({ next, 0, 0 }, 1, distance);
+    for (Index v = 0; v < n; ++v)
+    {
+      this->LandmarkDistance[v * count + l] = distance[v];
+      nearest[v] = std::min(nearest[v], distance[v]);
+    }
+    next = farthest(nearest);
+  }
+  this->Landmarks = count;
+}
+
+//------------------------------------------------------------------------------
 double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
   const std::array<double, 3>& seedDistance, int seedCount, const SurfacePoint& to,
   Workspace& workspace) const
@@ -301,9 +437,12 @@ double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
   if (static_cast<Index>(workspace.Distance.size()) != n)
   {
     workspace.Distance.assign(n, Infinity);
+    workspace.Parent.assign(n, -1);
     workspace.Touched.clear();
     workspace.Heap.clear();
   }
+  workspace.LastSearched = true;
+  std::vector<std::int32_t>& parent = workspace.Parent;
   std::vector<double>& distance = workspace.Distance;
   std::vector<std::int32_t>& touched = workspace.Touched;
   std::vector<Workspace::HeapEntry>& heap = workspace.Heap;
@@ -326,8 +465,44 @@ double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
     goalsLeft += repeated ? 0 : 1;
   }
   const bool aStar = this->UseAStar;
+  // With landmarks, also min over the goal corners k of (max over landmarks l of
+  // |d(l, k) - d(l, v)|) + |k - p|: a lower bound of the rest of any path through v (the
+  // search's distance to p is min over k of d(v, k) + |k - p|); the max of two consistent
+  // bounds, and the min over corners of consistent bounds, are consistent.
+  const int landmarks = aStar ? this->Landmarks : 0;
+  const double* landmarkDistance = this->LandmarkDistance.data();
+  // Corners by increasing offset: a corner whose offset alone reaches the bound so far
+  // cannot lower it (for a goal at a vertex, only that vertex is looked at).
+  std::array<int, 3> byOffset = { 0, 1, 2 };
+  std::sort(byOffset.begin(), byOffset.end(),
+    [&](int a, int b) { return goalOffset[a] < goalOffset[b]; });
+  auto landmarkBound = [&](std::int32_t v) {
+    const double* atV = landmarkDistance + static_cast<size_t>(v) * landmarks;
+    double bound = Infinity;
+    for (int k : byOffset)
+    {
+      if (goalOffset[k] >= bound)
+      {
+        break;
+      }
+      const double* atGoal = landmarkDistance + static_cast<size_t>(goal[k]) * landmarks;
+      double largest = 0.0;
+      for (int l = 0; l < landmarks; ++l)
+      {
+        const double difference = std::abs(atGoal[l] - atV[l]);
+        largest = std::isfinite(difference) ? std::max(largest, difference) : largest;
+      }
+      bound = std::min(bound, largest + goalOffset[k]);
+    }
+    return bound;
+  };
   auto heuristic = [&](std::int32_t v) {
-    return aStar ? (this->Points_.row(v).transpose() - p).norm() : 0.0;
+    if (!aStar)
+    {
+      return 0.0;
+    }
+    const double straight = (this->Points_.row(v).transpose() - p).norm();
+    return landmarks ? std::max(straight, landmarkBound(v)) : straight;
   };
   const auto greater = [](const Workspace::HeapEntry& a, const Workspace::HeapEntry& b) {
     return a.Key > b.Key;
@@ -343,6 +518,7 @@ double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
         touched.push_back(v);
       }
       distance[v] = seedDistance[s];
+      parent[v] = -1;
       heap.push_back({ seedDistance[s] + heuristic(v), seedDistance[s], v });
       std::push_heap(heap.begin(), heap.end(), greater);
     }
@@ -393,6 +569,7 @@ double EdgePathGeodesics::Search(const std::array<std::int32_t, 3>& seeds,
           touched.push_back(u);
         }
         distance[u] = candidate;
+        parent[u] = v;
         const double key = candidate + heuristic(u);
         if (key < best)
         {

@@ -100,6 +100,9 @@ public:
     std::vector<double> Distance;
     std::vector<std::int32_t> Touched;
     std::vector<HeapEntry> Heap;
+    /// The vertex each touched vertex was reached from (-1 for a seed), for LastPath.
+    std::vector<std::int32_t> Parent;
+    bool LastSearched = false; // false: the last query took the straight segment
     Index LastSettled = 0;
   };
 
@@ -114,10 +117,30 @@ public:
   double Distance(const SurfacePoint& from, const SurfacePoint& to, Workspace& workspace) const;
   /// From a vertex of the mesh.
   double Distance(Index fromVertex, const SurfacePoint& to, Workspace& workspace) const;
+  /// Between two vertices of the mesh: the shortest edge path (0 for one vertex; +infinity
+  /// for a vertex in no triangle, or in another component; NaN for an index out of range).
+  double Distance(Index fromVertex, Index toVertex, Workspace& workspace) const;
 
   /// A* (true, the default) or plain Dijkstra (false) with the same stopping rule; both give
   /// the same distances, Dijkstra settles more vertices. For tests and measurements.
   void SetUseAStar(bool useAStar) { this->UseAStar = useAStar; }
+
+  /// The vertices of the edge path the last query to vertex `toVertex` found, from its start
+  /// to toVertex. False if the last query searched nothing (its ends shared a triangle, and
+  /// the straight segment was the answer) or did not reach toVertex.
+  bool LastPath(Index toVertex, const Workspace& workspace, std::vector<Index>& path) const;
+
+  const Points& GetPoints() const { return this->Points_; }
+  const Triangles& GetTriangles() const { return this->Triangles_; }
+
+  /// Landmarks for the A* bound (ALT, Goldberg & Harrelson 2005): `count` vertices chosen by
+  /// farthest-point sampling along edge paths, with their edge-path distances to every
+  /// vertex (count searches over the whole mesh, kept: count x vertices doubles). A query
+  /// then also bounds the rest of a path from v by max over landmarks l of
+  /// |d(l, goal) - d(l, v)| (the triangle inequality), which on a body is far tighter than the
+  /// straight line for long paths (hand to hand): such a query settles a corridor instead of
+  /// most of the mesh. Distances are unchanged. Call after Build; 0 removes them.
+  void BuildLandmarks(int count);
 
   /// The point a SurfacePoint stands for.
   Eigen::Vector3d Position(const SurfacePoint& point) const;
@@ -134,6 +157,10 @@ private:
       point.Barycentric.allFinite();
   }
 
+  /// Edge-path distances from the seeds to every vertex (a full Dijkstra search).
+  void SearchAll(const std::array<std::int32_t, 3>& seeds, int seedCount,
+    std::vector<double>& distance) const;
+
   /// Seeds: up to three vertices with their starting distances.
   double Search(const std::array<std::int32_t, 3>& seeds, const std::array<double, 3>& seedDistance,
     int seedCount, const SurfacePoint& to, Workspace& workspace) const;
@@ -143,6 +170,12 @@ private:
   std::vector<std::int32_t> FirstNeighbor; // CSR offsets, size points + 1
   std::vector<std::int32_t> Neighbor;
   std::vector<double> EdgeLength;
+  /// Landmark l's distance to vertex v at [v * Landmarks + l] (BuildLandmarks): a vertex's
+  /// distances side by side, one cache line for 8 landmarks.
+  std::vector<double> LandmarkDistance;
+  int Landmarks = 0;
+  /// Per vertex, a triangle that holds it and the vertex's place in it (-1: in none).
+  std::vector<SurfacePoint> VertexCorner;
   double SurfaceArea = 0.0;
   bool UseAStar = true;
 };
