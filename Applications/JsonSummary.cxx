@@ -56,6 +56,12 @@ std::string Array(vtkPolyData* data, const char* name, int components)
   return out + "]";
 }
 
+// A figure the refinement stores as -1 when it could not measure it: null.
+std::string Measured(double value)
+{
+  return value >= 0 ? Number(value) : "null";
+}
+
 // How sure the refinement is of its choice (RefinementConfidence): the kept map's curvature
 // difference, the runner-up (null if none) and the margin to it (null if none).
 std::string Confidence(vtkPolyData* refined)
@@ -67,7 +73,7 @@ std::string Confidence(vtkPolyData* refined)
   }
   const bool runnerUp = confidence->GetComponent(0, 1) >= 0;
   std::ostringstream out;
-  out << "{\"curvature_difference\": " << Number(confidence->GetComponent(0, 0))
+  out << "{\"curvature_difference\": " << Measured(confidence->GetComponent(0, 0))
       << ", \"runner_up\": " << (runnerUp ? Number(confidence->GetComponent(0, 1)) : "null")
       << ", \"margin\": " << (runnerUp ? Number(confidence->GetComponent(0, 2)) : "null") << "}";
   return out.str();
@@ -99,7 +105,7 @@ std::string Refinement(vtkPolyData* refined, bool done)
     out << (c ? ", " : "") << "{\"orthogonality_residual\": " << Number(residuals->GetComponent(c, 0))
         << ", \"target_coverage\": " << Number(coverage->GetComponent(c, 0))
         << ", \"orientation_agreement\": " << Number(orientation->GetComponent(c, 0))
-        << ", \"curvature_difference\": " << Number(curvature->GetComponent(c, 0)) << "}";
+        << ", \"curvature_difference\": " << Measured(curvature->GetComponent(c, 0)) << "}";
   }
   out << "]}";
   return out.str();

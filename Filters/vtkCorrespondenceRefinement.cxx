@@ -176,6 +176,13 @@ void AddMapStretch(const MapInput& source, vtkPolyData* output)
     output->GetFieldData(), "RefinementMeanStretch", stretch.dot(mass) / mass.sum());
 }
 
+// Field data holds no NaN or infinity: a figure that was not measured (no curvature, no
+// runner-up to measure a margin to) is -1.
+double OrMinusOne(double value)
+{
+  return std::isfinite(value) ? value : -1.0;
+}
+
 void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector<double>& values)
 {
   vtkNew<vtkDoubleArray> array;
@@ -446,14 +453,14 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       residuals.push_back(map.OrthogonalityResidual);
       coverage.push_back(map.TargetCoverage);
       orientation.push_back(map.OrientationAgreement);
-      curvature.push_back(map.CurvatureDifference);
+      curvature.push_back(OrMinusOne(map.CurvatureDifference));
     }
     SetFieldVector(fieldData, "CandidateOrthogonalityResiduals", residuals);
     SetFieldVector(fieldData, "CandidateTargetCoverage", coverage);
     SetFieldVector(fieldData, "CandidateOrientationAgreement", orientation);
     SetFieldVector(fieldData, "CandidateCurvatureDifferences", curvature);
-    const double confidence[3] = { screened[bestCandidate].CurvatureDifference,
-      static_cast<double>(choice.RunnerUp), choice.Margin };
+    const double confidence[3] = { OrMinusOne(screened[bestCandidate].CurvatureDifference),
+      static_cast<double>(choice.RunnerUp), OrMinusOne(choice.Margin) };
     mobius::vtk::SetFieldValues(fieldData, "RefinementConfidence", confidence, 3);
     AddMapStretch(maps[0], output);
     mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationAgreement", best.OrientationAgreement);

@@ -37,12 +37,13 @@
  * - `CandidateOrientationAgreement` (per candidate): the share of sampled triangles whose
  *   image keeps its orientation (near 1 for a rotation's map, near 0 for a mirror image);
  * - `CandidateCurvatureDifferences` (per candidate): the mean |H_source - H_target| of the
- *   smoothed mean curvatures at the samples and their images, what the choice compares;
+ *   smoothed mean curvatures at the samples and their images, what the choice compares
+ *   (-1 where a surface's curvature could not be computed);
  * - `RefinementConfidence` (3 values): the kept candidate's curvature difference, the
  *   runner-up (the best other candidate of the expected orientation whose map differs;
- *   -1 if none) and the margin, (runner-up's difference - kept's) / kept's: below 0.05
- *   the two are near-equal and the map may be the wrong one of two (check it, and keep the
- *   other with `Candidate`);
+ *   -1 if none) and the margin, (runner-up's difference - kept's) / kept's (-1 without a
+ *   runner-up): below 0.05 the two are near-equal and the map may be the wrong one of two
+ *   (check it, and keep the other with `Candidate`);
  * - `RefinementMeanStretch`: the area-weighted mean of the point array `MapStretch`, per
  *   vertex the mean |log| of how the map stretches the edges around it (0 for an isometry;
  *   color the map by it to see where it can be trusted);
