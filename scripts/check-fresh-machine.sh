@@ -42,11 +42,12 @@ fi
 SECONDS=0
 chroot_remove "$root" || exit 1
 rm -rf "$logs" && mkdir -p "$logs" "$ccache_dir"
+remove_seconds=$SECONDS
 chroot_create "$root" || { echo "check-fresh-machine: could not make the chroot"; exit 1; }
 chroot_mount "$root" "$ccache_dir:/root/.cache/ccache" || exit 1
 git clone -q --no-hardlinks "$repo" "$root$checkout" &&
   git -C "$root$checkout" checkout -q --detach "$commit" || exit 1
-base_seconds=$SECONDS
+base_seconds=$((SECONDS - remove_seconds))
 CCACHE_DIR="$ccache_dir" ccache --zero-stats > /dev/null 2>&1
 
 results=()
@@ -60,7 +61,7 @@ step() {
   chroot_run "$root" bash -c "cd $checkout && $*" > "$log" 2>&1 < <(yes)
   status=$?
   local summary
-  summary="$(grep -E "tests passed, [0-9]+ tests failed out of" "$log" | tail -1)"
+  summary="$(grep -E "tests passed, [0-9]+ tests failed out of|^Demo ground truth" "$log" | tail -1)"
   if [ "$status" = 0 ]; then
     results+=("PASS  $label  ($((SECONDS - start)) s)  $summary")
   else
@@ -101,7 +102,8 @@ echo
 echo "== summary: $variant check of ${commit:0:7} in a Debian $(chroot_run "$root" cat /etc/debian_version)" \
      "minbase chroot at $root"
 chroot_run "$root" dpkg-query -W -f '   ${Package} ${Version}\n' libexpat1 paraview libvtk9.1 2> /dev/null
-echo "   chroot made and cloned in ${base_seconds} s; total $SECONDS s"
+echo "   previous chroot removed in ${remove_seconds} s, chroot made and cloned in ${base_seconds} s;" \
+     "total $SECONDS s"
 CCACHE_DIR="$ccache_dir" ccache --print-stats 2> /dev/null | awk '
   $1 ~ /^(direct_cache_hit|preprocessed_cache_hit)$/ { hits += $2 } $1 == "cache_miss" { misses = $2 }
   END { if (hits + misses) printf "   compiler cache: %d hits, %d misses\n", hits, misses }'
