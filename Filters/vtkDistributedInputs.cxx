@@ -1,5 +1,6 @@
 #include "vtkDistributedInputs.h"
 
+#include "vtkLostPiecesCheck.h"
 #include "vtkMergePieces.h"
 #include "vtkSphericalMapData.h"
 
@@ -13,6 +14,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <string>
 #include <vector>
 
 namespace mobius
@@ -155,7 +157,14 @@ int RequestDataOnWholeInputs(vtkAlgorithm* filter, vtkInformationVector** inputV
   }
   if (controller->GetLocalProcessId() == RootProcess)
   {
-    if (failed)
+    const std::string lost = failed ? std::string() : LostPiecesReason(filter);
+    if (!lost.empty())
+    {
+      // Holes where cells were lost are not the surface's own: refuse them, never fill them.
+      vtkErrorWithObjectMacro(filter, << "The pieces gathered from the ranks are incomplete: "
+                                      << lost << ".");
+    }
+    if (failed || !lost.empty())
     {
       status = 0;
     }

@@ -11,6 +11,8 @@
  * the other ranks output an empty polydata: **the result lives on rank 0**. All ranks
  * return rank 0's status, so when it fails (a bad mesh) no rank runs the filters
  * downstream, which would wait for it in their own gathers; rank 0 reports the error.
+ * Pieces that a filter upstream is known to have lost cells of (vtkLostPiecesCheck.h) are
+ * refused so.
  *
  * Any other request (one piece, or one process; also each rank running its own pipelines
  * on its own meshes, as the batch examples do) runs the algorithm on the input as it is,

@@ -7,30 +7,27 @@
 #   loaded at pvpython and paraview start-up (its filters in the proxy list); the macro, run on
 #   two meshes in pvbatch and from the paraview GUI's Macros menu, makes the side-by-side
 #   views (screenshots); apt remove and apt purge leave no file of the package behind.
-# Run as root on a bookworm machine with debootstrap:
+# Run as root on a bookworm machine:
 #   scripts/check-deb-in-chroot.sh build-deb/mobius-registration_0.1.0_amd64.deb [CHROOT_DIR]
-# The chroot (default /work/chroot-deb) is made on the first run and reused: a run removes
-# the package (purge) at its end. The install pulls ParaView and its dependencies (~1.5 GB).
+# The chroot (default $MOBIUS_CHROOT_DIR/deb, /work/chroots/deb) is made on the first run
+# (scripts/bookworm-chroot.sh: the machine's own apt sources, its base and .deb files cached)
+# and reused: a run removes the package (purge) at its end. The install pulls ParaView and
+# its dependencies (~1.5 GB).
 # Prints PASS or FAIL per item, a summary, and exits non-zero if any item failed; the
 # screenshots are copied to $MOBIUS_CHECK_OUTPUT (default: the .deb's folder).
 set -uo pipefail
 deb=$(realpath "$1")
-root=${2:-/work/chroot-deb}
-mirror=http://deb.debian.org/debian
+root=${2:-${MOBIUS_CHROOT_DIR:-/work/chroots}/deb}
 output=$(realpath "${MOBIUS_CHECK_OUTPUT:-$(dirname "$deb")}")
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+# shellcheck source=bookworm-chroot.sh
+source "$here/bookworm-chroot.sh"
 
+"$here/install-debian-packages.sh" "$here/debian-packages-chroot.txt" || exit 1
 if [ ! -x "$root/usr/bin/apt-get" ]; then
-  debootstrap --variant=minbase bookworm "$root" "$mirror" || exit 1
+  chroot_remove "$root" && chroot_create "$root" || exit 1
 fi
-cp /etc/resolv.conf "$root/etc/resolv.conf"
-mounts=(proc sys dev/shm dev/pts)
-for m in "${mounts[@]}"; do
-  mkdir -p "$root/$m"
-  mountpoint -q "$root/$m" || mount --bind "/$m" "$root/$m"
-done
-cleanup() { for m in dev/pts dev/shm sys proc; do umount "$root/$m" 2>/dev/null || true; done; }
-trap cleanup EXIT
+chroot_mount "$root" || exit 1
 name=$(basename "$deb")
 rm -rf "$root/tmp/mobius-check" && mkdir -p "$root/tmp/mobius-check"
 cp "$deb" "$root/tmp/mobius-check/"
@@ -38,8 +35,7 @@ cp "$here"/check-deb/*.py "$here"/check-deb/*.xml "$root/tmp/mobius-check/"
 
 # Everything below runs inside the chroot with a minimal environment: no PYTHONPATH,
 # PV_PLUGIN_PATH, PV_MACRO_PATH or LD_LIBRARY_PATH.
-in_chroot() { chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
-  DEBIAN_FRONTEND=noninteractive LANG=C.UTF-8 "$@"; }
+in_chroot() { chroot_run "$root" "$@"; }
 
 results=()
 failed=0
