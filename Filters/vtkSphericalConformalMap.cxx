@@ -335,6 +335,7 @@ int vtkSphericalConformalMap::ComputeOutput(
   parameters.IntrinsicDelaunay = this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_ON ||
     (this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_AUTOMATIC &&
       mobius::SmallestTriangleAngleDegrees(points, triangles) < this->IntrinsicDelaunayAngle);
+  parameters.IntrinsicDelaunayWhenFolded = this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_AUTOMATIC;
   parameters.FlipRepairPasses = this->FlipRepairPasses;
   parameters.MobiusCentering = this->CenterBetweenSteps;
   parameters.LinearStart = this->LinearStart;
@@ -481,9 +482,14 @@ int vtkSphericalConformalMap::ComputeOutput(
   SetFieldValue(fieldData, "FlippedTriangles", static_cast<double>(result.Distortion.FlippedTriangles));
   SetFieldValue(fieldData, "MeanQuasiConformalDistortion", result.Distortion.MeanQuasiConformal);
   SetFieldValue(fieldData, "MaxQuasiConformalDistortion", result.Distortion.MaxQuasiConformal);
+  SetFieldValue(fieldData, "MedianQuasiConformalDistortion", result.Distortion.MedianQuasiConformal);
+  SetFieldValue(fieldData, "P95QuasiConformalDistortion", result.Distortion.P95QuasiConformal);
+  SetFieldValue(fieldData, "P99QuasiConformalDistortion", result.Distortion.P99QuasiConformal);
+  SetFieldValue(fieldData, "SquashedAreaShare", result.Distortion.SquashedAreaShare);
+  SetFieldValue(fieldData, "SmallestSphereAreaShare", result.Distortion.SmallestMappedAreaShare);
   const double areaRange[2] = { result.Distortion.MinAreaRatio, result.Distortion.MaxAreaRatio };
   mobius::vtk::SetFieldValues(fieldData, "AreaDistortionRange", areaRange, 2);
-  SetFieldValue(fieldData, "IntrinsicDelaunayUsed", parameters.IntrinsicDelaunay ? 1 : 0);
+  SetFieldValue(fieldData, "IntrinsicDelaunayUsed", result.IntrinsicDelaunayUsed ? 1 : 0);
   SetFieldValue(fieldData, "IntrinsicDelaunayFlips", static_cast<double>(result.IntrinsicFlips));
   SetFieldValue(fieldData, "MergedDuplicatePoints", static_cast<double>(duplicates));
   SetFieldValue(fieldData, "FilledHoles", static_cast<double>(filledHoles));
