@@ -2,6 +2,7 @@
 
 #include "ConformalMap.h"
 #include "MapDistortion.h"
+#include "MapVerdict.h"
 #include "MeshTopology.h"
 #include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
@@ -17,7 +18,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkMath.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
@@ -369,63 +369,17 @@ int vtkSphericalConformalMap::ComputeOutput(
     }
     return 0;
   }
-  // The reasons the map is degenerate, if it is: the output is still produced (a caller may
-  // want to look at it), but the field data says it carries no trustworthy correspondence.
-  std::vector<std::string> problems;
-  if (!result.Converged)
-  {
-    std::ostringstream problem;
-    problem << "the flow stopped after " << result.Iterations << " steps with relative change "
-            << result.RelativeChange << " above the tolerance " << this->ConvergenceTolerance;
-    problems.push_back(problem.str());
-  }
-  if (result.Distortion.FlippedTriangles > 0)
-  {
-    std::ostringstream problem;
-    problem << result.Distortion.FlippedTriangles
-            << " triangles are flipped on the sphere after the repair";
-    problems.push_back(problem.str());
-  }
-  // Spread over the sphere, even a tetrahedron's triangles span 37% of its area; a map
-  // whose vertices crowd into one spot spans almost none.
-  double sphereArea = 0;
-  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::Vector3d a = result.SpherePoints.row(triangles(t, 0)),
-                          b = result.SpherePoints.row(triangles(t, 1)),
-                          c = result.SpherePoints.row(triangles(t, 2));
-    sphereArea += 0.5 * (b - a).cross(c - a).norm();
-  }
-  const double coveredShare = sphereArea / (4 * vtkMath::Pi());
-  if (!(coveredShare >= 0.1))
-  {
-    std::ostringstream problem;
-    problem << "the map collapsed: its triangles span " << 100 * coveredShare
-            << "% of the sphere";
-    problems.push_back(problem.str());
-  }
-  // Area-weighted, real meshes stay below 2 (CGAL's bull, with triangles of 1e-3 degrees,
-  // 1.75); above 10 the triangles are squashed flat on average: a closed pentagonal prism
-  // reaches 5,000, and the correspondence read off such a map means nothing.
-  if (!(result.Distortion.MeanQuasiConformal <= 10))
-  {
-    std::ostringstream problem;
-    problem << "its triangles are squashed: mean quasi-conformal distortion "
-            << result.Distortion.MeanQuasiConformal << " (1 is conformal, real meshes stay below 2)";
-    problems.push_back(problem.str());
-  }
-  if (!result.Refinement.Success)
-  {
-    problems.push_back("the refinement of squeezed regions failed, which keep the flow's positions");
-  }
-  std::string degenerateReason;
-  for (const auto& problem : problems)
-  {
-    degenerateReason += (degenerateReason.empty() ? "" : "; ") + problem;
-  }
-  if (!degenerateReason.empty())
+  // A degenerate map is still output (a caller may want to look at it), but the field data
+  // says it carries no trustworthy correspondence, and why.
+  const mobius::MapVerdict verdict = mobius::JudgeConformalMap(result, this->ConvergenceTolerance);
+  const std::string degenerateReason = verdict.Reason();
+  if (verdict.Degenerate())
   {
     vtkWarningMacro(<< "The map is degenerate: " << degenerateReason << ".");
+  }
+  else if (!verdict.Warning.empty())
+  {
+    vtkWarningMacro(<< "The map is usable, but " << verdict.Warning << ".");
   }
 
   // Assemble the spherical map.
@@ -497,11 +451,15 @@ int vtkSphericalConformalMap::ComputeOutput(
   SetFieldValue(
     fieldData, "FlipRepairMovedVertices", static_cast<double>(result.FlipRepair.MovedVertices));
   SetFieldValue(fieldData, "SqueezedRegionRefinementFailed", result.Refinement.Success ? 0 : 1);
-  SetFieldValue(fieldData, "DegenerateMap", degenerateReason.empty() ? 0 : 1);
+  SetFieldValue(fieldData, "DegenerateMap", verdict.Degenerate() ? 1 : 0);
   vtkNew<vtkStringArray> reason;
   reason->SetName("DegenerateMapReason");
   reason->InsertNextValue(degenerateReason);
   fieldData->AddArray(reason);
+  vtkNew<vtkStringArray> warning;
+  warning->SetName("MapWarning");
+  warning->InsertNextValue(verdict.Degenerate() ? std::string() : verdict.Warning);
+  fieldData->AddArray(warning);
   this->UpdateProgress(1.0);
   return 1;
 }

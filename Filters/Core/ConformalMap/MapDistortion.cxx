@@ -148,6 +148,7 @@ MapDistortion MeasureMapDistortion(
   d.P95QuasiConformal = quantiles[1];
   d.P99QuasiConformal = quantiles[2];
   d.SmallestMappedAreaShare = m > 0 ? mappedArea.minCoeff() / (4.0 * M_PI) : 1.0;
+  d.MappedAreaShare = mappedTotal / (4.0 * M_PI);
   if (d.MaxAreaRatio == 0.0 && d.MinAreaRatio == std::numeric_limits<double>::infinity())
   {
     d.MinAreaRatio = d.MaxAreaRatio = 1.0; // nothing measured

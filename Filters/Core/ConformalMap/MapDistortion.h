@@ -43,6 +43,9 @@ struct MapDistortion
   /// map squeezes a triangle. Double precision resolves positions on the unit sphere to
   /// about 1e-16, so triangles below about 1e-28 of the sphere are at its limit.
   double SmallestMappedAreaShare = 1.0;
+  /// The mapped (flat) triangles' total area over 4 pi: near 1 for a map that covers the
+  /// sphere, near 0 for one whose vertices crowd into one spot.
+  double MappedAreaShare = 1.0;
 };
 
 /// Six times the signed volume of the tetrahedron (0, a, b, c), computed as
