@@ -12,8 +12,6 @@
 
 #include "MeshTypes.h"
 
-#include <algorithm>
-
 namespace mobius
 {
 struct ExtendedPoint
@@ -62,23 +60,6 @@ public:
 
   Points High, Low;
 };
-
-/// The longest edge at each vertex.
-inline Vector LongestEdges(const ExtendedPoints& x, const Triangles& triangles)
-{
-  Vector longest = Vector::Zero(x.High.rows());
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
-      const double length = x.Difference(a, b).norm();
-      longest[a] = std::max(longest[a], length);
-      longest[b] = std::max(longest[b], length);
-    }
-  }
-  return longest;
-}
 }
 
 #endif

@@ -1,6 +1,6 @@
 #include "SqueezedRegionRefinement.h"
 
-#include "ExtendedPoints.h"
+#include "NestedFrames.h"
 #include "SqueezedTipSpreading.h"
 
 #ifdef MOBIUS_HAVE_CHOLMOD
@@ -89,23 +89,22 @@ SparseMatrix MeanValueWeights(const Points& p, const Triangles& triangles)
 
 // Re-solves the squeezed regions of one threshold: `local` numbers the members (-1 for the
 // rest). False if the factorization or the solution failed.
-bool ResolveRegions(ExtendedPoints& x, const SparseMatrix& weights, const std::vector<Index>& members,
-  const std::vector<Index>& local)
+bool ResolveRegions(NestedFrames& frames, const SparseMatrix& weights,
+  const std::vector<Index>& members, const std::vector<Index>& local)
 {
   const Index m = static_cast<Index>(members.size());
-  // Regions (connected components of the members) and each one's local origin c: the
-  // position of its first member. Rows of different regions never couple, so one
-  // factorization serves them all.
-  std::vector<Index> region(static_cast<size_t>(m), -1), stack;
-  std::vector<ExtendedPoint> origin;
+  // Regions (connected components of the members) and each one's local origin: its first
+  // member's position. Rows of different regions never couple, so one factorization serves
+  // them all.
+  std::vector<Index> region(static_cast<size_t>(m), -1), stack, origins;
   for (Index s = 0; s < m; ++s)
   {
     if (region[s] >= 0)
     {
       continue;
     }
-    const Index id = static_cast<Index>(origin.size());
-    origin.push_back(x.Point(members[s]));
+    const Index id = static_cast<Index>(origins.size());
+    origins.push_back(members[s]);
     region[s] = id;
     stack.assign(1, s);
     while (!stack.empty())
@@ -128,7 +127,7 @@ bool ResolveRegions(ExtendedPoints& x, const SparseMatrix& weights, const std::v
   for (Index r = 0; r < m; ++r)
   {
     const Index i = members[r];
-    const ExtendedPoint& c = origin[region[r]];
+    const Index origin = origins[region[r]];
     // Row r: sum_j w_ij (x_i - x_j) = 0, i.e. x_i is the weighted average of its
     // neighbours.
     double total = 0.0;
@@ -142,7 +141,9 @@ bool ResolveRegions(ExtendedPoints& x, const SparseMatrix& weights, const std::v
       }
       else
       {
-        rhs.row(r) += it.value() * x.Difference(it.row(), c); // boundary values move right
+        // Boundary values move right, relative to the origin (from the deepest level that
+        // holds both: accurate relative to their distance).
+        rhs.row(r) += it.value() * frames.Difference(it.row(), origin);
       }
     }
     entries.emplace_back(r, r, total);
@@ -160,10 +161,7 @@ bool ResolveRegions(ExtendedPoints& x, const SparseMatrix& weights, const std::v
   {
     return false;
   }
-  for (Index r = 0; r < m; ++r)
-  {
-    x.Set(members[r], origin[region[r]], y.row(r));
-  }
+  frames.AddLevel(members, region, origins, y);
   return true;
 }
 }
@@ -173,10 +171,10 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
 {
   SqueezedRegionRefinementResult result;
   const Index n = sphere.rows();
-  ExtendedPoints x(sphere);
+  NestedFrames frames(sphere);
   SparseMatrix weights; // built when the first squeezed region is found
   std::vector<char> refined(static_cast<size_t>(n), 0);
-  Vector longest = LongestEdges(x, triangles);
+  Vector longest = frames.LongestEdges(triangles);
   for (double tau = largestThreshold; tau > SmallestSqueezedRegionThreshold; tau *= 1e-2)
   {
     std::vector<Index> local(static_cast<size_t>(n), -1), members;
@@ -201,7 +199,7 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
         break;
       }
     }
-    if (!ResolveRegions(x, weights, members, local))
+    if (!ResolveRegions(frames, weights, members, local))
     {
       result.Success = false;
       break;
@@ -211,7 +209,7 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
       refined[i] = 1;
     }
     ++result.Levels;
-    longest = LongestEdges(x, triangles);
+    longest = frames.LongestEdges(triangles);
   }
   result.SmallestEdge = std::numeric_limits<double>::infinity();
   for (Index t = 0; t < triangles.rows(); ++t)
@@ -219,7 +217,7 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
     for (int k = 0; k < 3; ++k)
     {
       result.SmallestEdge = std::min(
-        result.SmallestEdge, x.Difference(triangles(t, k), triangles(t, (k + 1) % 3)).norm());
+        result.SmallestEdge, frames.Difference(triangles(t, k), triangles(t, (k + 1) % 3)).norm());
     }
   }
   for (char r : refined)
@@ -228,9 +226,10 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
   }
   if (n > 0 && longest.minCoeff() < ResolvableEdgeLength)
   {
-    result.Spreading = SpreadUnresolvedTips(x, triangles);
+    result.Spreading = SpreadUnresolvedTips(frames, triangles);
   }
   // Back to doubles on the unit sphere: every edge the spreading reached is now resolved.
+  const ExtendedPoints& x = frames.Absolute();
   for (Index i = 0; i < n; ++i)
   {
     if (x.High.row(i) != sphere.row(i) || !x.Low.row(i).isZero(0.0))

@@ -14,9 +14,10 @@
 // ever smaller thresholds resolves regions nested inside squeezed regions (a leg, its hoof).
 // Measured on the camel (threshold 1e-7): mean quasi-conformal distortion 1551 -> 1.39.
 //
-// The positions are kept to about 32 digits between the levels (ExtendedPoints.h), so the
-// nesting goes on down to regions 1e-28 across. Where the map squeezes a tip below what a
-// double on the unit sphere resolves, the tip is spread out (SqueezedTipSpreading.h).
+// Each level's solution is kept in its own coordinates (NestedFrames.h), so the nesting goes
+// on to any depth (1e-150): a hoof 1e-40 across is resolved relative to its own size. Where
+// the map squeezes a tip below what a double on the unit sphere resolves, the tip is then
+// spread out (SqueezedTipSpreading.h).
 #ifndef mobius_SqueezedRegionRefinement_h
 #define mobius_SqueezedRegionRefinement_h
 
@@ -26,10 +27,9 @@
 
 namespace mobius
 {
-/// The thresholds of the nested levels stop above this edge length: about what the
-/// extended positions resolve (32 digits) on the unit sphere, with room for the local solve's
-/// own rounding.
-constexpr double SmallestSqueezedRegionThreshold = 1e-28;
+/// The thresholds of the nested levels stop above this edge length, whose square double
+/// precision still holds (1e-300).
+constexpr double SmallestSqueezedRegionThreshold = 1e-150;
 
 struct SqueezedRegionRefinementResult
 {

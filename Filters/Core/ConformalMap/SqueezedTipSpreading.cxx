@@ -2,8 +2,11 @@
 
 #include "MeshAdjacency.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace mobius
@@ -15,98 +18,167 @@ constexpr int MaximumSpreadTips = 100;
 // The exponents tried: 1, 0.9, 0.81, ... down to 1e-3 (quasi-conformal distortion 1000).
 constexpr double ExponentStep = 0.9;
 constexpr double SmallestExponentTried = 1e-3;
+// The disks tried, smallest first: each reaches no vertex with an edge this long. Larger
+// disks leave room for gentler spreadings (fewer folds) but distort more of the map.
+constexpr double DiskEdgeLengths[] = { 1e-9, 1e-7, 1e-5, 1e-3 };
 
+// A disk around a tip: the vertices inside it (which the spreading moves) and the triangles
+// touching them, with every corner's offset from the tip.
 struct Disk
 {
-  ExtendedPoint Center;
+  Index Center = -1;
   double Radius = 0.0;
-  std::vector<Index> Members;                // vertices inside
-  std::vector<Eigen::RowVector3d> Offsets;   // their offsets from the center
+  Eigen::RowVector3d Normal; // the sphere's normal at the tip
+  std::vector<Index> Members;
+  std::vector<Eigen::RowVector3d> MemberOffsets;
+  std::vector<Index> Triangles;
+  std::vector<Eigen::RowVector3d> CornerOffsets; // 3 per triangle
+  std::vector<char> CornerMoves;                 // 3 per triangle: inside the disk
 };
 
-// The disk around `tip` that reaches no well-resolved vertex, and the vertices in it.
-Disk FindDisk(const ExtendedPoints& x, const Vector& longest, Index tip)
+// The disk around `tip` that reaches no vertex whose edges reach `resolved`.
+Disk FindDisk(const NestedFrames& x, const Triangles& triangles, const VertexLists& around,
+  const Vector& longest, Index tip, double resolved)
 {
   Disk disk;
-  disk.Center = x.Point(tip);
+  disk.Center = tip;
+  const Eigen::RowVector3d center = x.Absolute().High.row(tip);
+  disk.Normal = center.normalized();
   disk.Radius = std::numeric_limits<double>::infinity();
   for (Index v = 0; v < longest.size(); ++v)
   {
-    if (longest[v] >= ResolvedEdgeLength)
+    if (longest[v] >= resolved)
     {
-      disk.Radius = std::min(disk.Radius, x.Difference(v, disk.Center).norm());
+      disk.Radius = std::min(disk.Radius, x.Difference(v, tip).norm());
     }
   }
-  for (Index v = 0; v < longest.size() && std::isfinite(disk.Radius); ++v)
+  if (!std::isfinite(disk.Radius))
   {
-    const Eigen::RowVector3d offset = x.Difference(v, disk.Center);
+    return disk;
+  }
+  std::vector<char> listed(static_cast<size_t>(triangles.rows()), 0);
+  for (Index v = 0; v < longest.size(); ++v)
+  {
+    const Eigen::RowVector3d offset = x.Difference(v, tip);
     if (offset.norm() < disk.Radius)
     {
       disk.Members.push_back(v);
-      disk.Offsets.push_back(offset);
+      disk.MemberOffsets.push_back(offset);
+      for (Index k = around.Begin(v); k < around.End(v); ++k)
+      {
+        const Index t = around.Items[k];
+        if (!listed[t])
+        {
+          listed[t] = 1;
+          disk.Triangles.push_back(t);
+        }
+      }
+    }
+  }
+  for (Index t : disk.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::RowVector3d offset = x.Difference(triangles(t, k), tip);
+      disk.CornerOffsets.push_back(offset);
+      disk.CornerMoves.push_back(offset.norm() < disk.Radius ? 1 : 0);
     }
   }
   return disk;
 }
 
-// The radial power map of the disk: rho -> R (rho / R)^a.
+// The radial power map of the disk: rho -> R (rho / R)^a. (A collar easing the slope from 1
+// at the disk's edge to a inside left more folds on the generated branches, not fewer.)
 Eigen::RowVector3d Spread(const Eigen::RowVector3d& offset, double radius, double exponent)
 {
   const double rho = offset.norm();
   return rho > 0.0 ? Eigen::RowVector3d(offset * std::pow(rho / radius, exponent - 1.0)) : offset;
 }
 
-// The shortest edge at the disk's members once spread with `exponent`; `local` numbers the
-// members (-1 outside the disk, whose vertices stay).
-double ShortestSpreadEdge(const ExtendedPoints& x, const Disk& disk, const std::vector<Index>& local,
-  const VertexLists& neighbours, double exponent)
+// The disk's triangles once spread with `exponent`: their shortest edge and how many fold.
+struct SpreadQuality
 {
-  double shortest = std::numeric_limits<double>::infinity();
-  for (size_t r = 0; r < disk.Members.size(); ++r)
+  double Shortest = 0.0;
+  Index Folded = 0;
+};
+
+SpreadQuality Evaluate(const Disk& disk, double exponent)
+{
+  SpreadQuality quality;
+  quality.Shortest = std::numeric_limits<double>::infinity();
+  for (size_t t = 0; t < disk.Triangles.size(); ++t)
   {
-    const Index v = disk.Members[r];
-    const Eigen::RowVector3d p = Spread(disk.Offsets[r], disk.Radius, exponent);
-    for (Index k = neighbours.Begin(v); k < neighbours.End(v); ++k)
+    Eigen::RowVector3d q[3];
+    for (int k = 0; k < 3; ++k)
     {
-      const Index w = neighbours.Items[k];
-      const Eigen::RowVector3d q = local[w] >= 0
-        ? Spread(disk.Offsets[local[w]], disk.Radius, exponent)
-        : Eigen::RowVector3d(x.Difference(w, disk.Center));
-      shortest = std::min(shortest, (p - q).norm());
+      const size_t c = 3 * t + k;
+      q[k] = disk.CornerMoves[c] ? Spread(disk.CornerOffsets[c], disk.Radius, exponent)
+                                 : disk.CornerOffsets[c];
     }
+    for (int k = 0; k < 3; ++k)
+    {
+      quality.Shortest = std::min(quality.Shortest, (q[(k + 1) % 3] - q[k]).norm());
+    }
+    quality.Folded += disk.Normal.dot((q[1] - q[0]).cross(q[2] - q[0])) <= 0.0 ? 1 : 0;
   }
-  return shortest;
+  return quality;
 }
 
-// The largest exponent that resolves every edge at the disk, or else the one that makes its
-// shortest edge longest.
-double ChooseExponent(const ExtendedPoints& x, const Disk& disk, const std::vector<Index>& local,
-  const VertexLists& neighbours, double& shortest)
+// A spreading of one disk: the exponent and what it gives.
+struct SpreadChoice
 {
-  double best = 1.0;
-  shortest = ShortestSpreadEdge(x, disk, local, neighbours, 1.0);
-  for (double a = ExponentStep; a >= SmallestExponentTried && shortest < ResolvableEdgeLength;
-       a *= ExponentStep)
+  double Exponent = 1.0;
+  SpreadQuality Quality;
+  /// Every edge resolved.
+  bool Resolved() const { return this->Quality.Shortest >= ResolvableEdgeLength; }
+  /// Better: resolved before not; then fewer folds; then (both unresolved) a longer
+  /// shortest edge; then a larger exponent (less distortion).
+  bool Better(const SpreadChoice& other) const
   {
-    const double length = ShortestSpreadEdge(x, disk, local, neighbours, a);
-    if (length > shortest)
+    if (this->Resolved() != other.Resolved())
     {
-      shortest = length;
-      best = a;
+      return this->Resolved();
+    }
+    if (this->Resolved() && this->Quality.Folded != other.Quality.Folded)
+    {
+      return this->Quality.Folded < other.Quality.Folded;
+    }
+    if (!this->Resolved() && this->Quality.Shortest != other.Quality.Shortest)
+    {
+      return this->Quality.Shortest > other.Quality.Shortest;
+    }
+    return this->Exponent > other.Exponent;
+  }
+};
+
+// The best exponent for the disk (see SpreadChoice::Better). Folds the spreading leaves (a
+// straight edge cutting inside the next ring when the rings come closer than the polygon's
+// sagitta) are few and the flip repair's to undo.
+SpreadChoice ChooseExponent(const Disk& disk)
+{
+  SpreadChoice best;
+  best.Quality = Evaluate(disk, 1.0);
+  for (double a = ExponentStep; a >= SmallestExponentTried; a *= ExponentStep)
+  {
+    SpreadChoice choice;
+    choice.Exponent = a;
+    choice.Quality = Evaluate(disk, a);
+    if (choice.Better(best))
+    {
+      best = choice;
     }
   }
   return best;
 }
 }
 
-TipSpreadingResult SpreadUnresolvedTips(ExtendedPoints& x, const Triangles& triangles)
+TipSpreadingResult SpreadUnresolvedTips(NestedFrames& x, const Triangles& triangles)
 {
   TipSpreadingResult result;
-  const Index n = x.High.rows();
-  const VertexLists neighbours = VertexNeighbors(n, triangles);
+  const Index n = x.Absolute().High.rows();
+  const VertexLists around = VertexTriangles(n, triangles);
   std::vector<char> moved(static_cast<size_t>(n), 0), abandoned(static_cast<size_t>(n), 0);
-  std::vector<Index> local(static_cast<size_t>(n), -1);
-  Vector longest = LongestEdges(x, triangles);
+  Vector longest = x.LongestEdges(triangles);
   for (int tip = 0; tip < MaximumSpreadTips; ++tip)
   {
     // The deepest vertex not given up on.
@@ -123,31 +195,35 @@ TipSpreadingResult SpreadUnresolvedTips(ExtendedPoints& x, const Triangles& tria
     {
       break;
     }
-    const Disk disk = FindDisk(x, longest, deepest);
-    for (size_t r = 0; r < disk.Members.size(); ++r)
+    // The disk with the best spreading (the smallest, of equal ones).
+    Disk disk;
+    SpreadChoice choice;
+    for (double resolved : DiskEdgeLengths)
     {
-      local[disk.Members[r]] = static_cast<Index>(r);
+      Disk candidate = FindDisk(x, triangles, around, longest, deepest, resolved);
+      const SpreadChoice candidateChoice = ChooseExponent(candidate);
+      if (disk.Center < 0 || candidateChoice.Better(choice))
+      {
+        disk = std::move(candidate);
+        choice = candidateChoice;
+      }
     }
-    double shortest = 0.0;
-    const double exponent = ChooseExponent(x, disk, local, neighbours, shortest);
-    for (size_t r = 0; r < disk.Members.size(); ++r)
-    {
-      local[disk.Members[r]] = -1;
-    }
+    const double exponent = choice.Exponent;
     if (exponent < 1.0)
     {
-      for (size_t r = 0; r < disk.Members.size(); ++r)
+      const ExtendedPoint center = x.Absolute().Point(disk.Center);
+      for (size_t m = 0; m < disk.Members.size(); ++m)
       {
-        x.Set(disk.Members[r], disk.Center, Spread(disk.Offsets[r], disk.Radius, exponent));
-        moved[disk.Members[r]] = 1;
+        x.MoveAbsolute(disk.Members[m], center, Spread(disk.MemberOffsets[m], disk.Radius, exponent));
+        moved[disk.Members[m]] = 1;
       }
       ++result.SpreadTips;
       result.SmallestExponent = std::min(result.SmallestExponent, exponent);
-      longest = LongestEdges(x, triangles);
+      longest = x.LongestEdges(triangles);
     }
     // A tip the disk could not resolve is not tried again (its disk would be the same).
     abandoned[deepest] = 1;
-    if (!(shortest >= ResolvableEdgeLength))
+    if (!choice.Resolved())
     {
       for (Index v : disk.Members)
       {

@@ -6,31 +6,32 @@
 // 1e-20 or 1e-30 across on the unit sphere. A double near 1 resolves 1e-16: stored, such
 // triangles collapse to points or fold, and the map is neither conformal nor usable there.
 // The map cannot be conformal at that scale and stored in doubles at once, so we give up
-// conformality where it must go: around the tip p, the disk of radius R that reaches no
-// well-resolved vertex (edges of ResolvedEdgeLength or more) is mapped radially by
-// rho -> R (rho / R)^a, with the largest a in (0, 1] that leaves every edge touching the
-// disk at least ResolvableEdgeLength long. That power map is one-to-one, keeps the disk's
-// edge fixed and has the same quasi-conformal distortion 1/a everywhere inside: the tip keeps
-// its shape up to that stretch instead of collapsing. Folds left by the spreading (a
-// straight-edged triangle spanning much of the disk) are the flip repair's to undo, now at a
-// scale where it has room.
+// conformality where it must go: around the tip p, a disk of radius R (reaching no vertex
+// whose edges are 1e-9 long; or 1e-7, 1e-5, 1e-3 if that gives a better spreading) is mapped
+// radially by rho -> R (rho / R)^a. That power map is one-to-one, keeps the disk's edge
+// fixed and has the same quasi-conformal distortion 1/a everywhere inside: the tip keeps its
+// shape up to that stretch instead of collapsing. The exponent is the largest that leaves
+// every edge at the disk at least ResolvableEdgeLength long with the fewest folded triangles:
+// a ring of m vertices whose straight edges cut inside the next ring (the rings brought
+// closer than the polygon's sagitta, about pi^2 / 2m^2 of the radius) folds, so a cannot go
+// far below pi / 4m. The few folds left are the flip repair's to undo, at a scale where it
+// has room (generated branches 30 to 40 times as long as wide: 32 to 139 folds, all undone).
 //
-// The positions come in extended precision (ExtendedPoints.h), accurate to about 1e-32 on
-// the sphere; a tip squeezed further than that is noise, spread out like the rest.
+// The offsets from the tip come from the nested levels (NestedFrames.h), accurate relative
+// to their size at any depth, so the spread tip keeps the conformal map's shape (up to the
+// stretch 1/a).
 #ifndef mobius_SqueezedTipSpreading_h
 #define mobius_SqueezedTipSpreading_h
 
-#include "ExtendedPoints.h"
+#include "NestedFrames.h"
 #include "MeshTypes.h"
 
 namespace mobius
 {
 /// Edges shorter than this on the unit sphere are spread out: a hundred units in the last
 /// place of a coordinate near 1, so that a triangle's orientation survives rounding. The
-/// development meshes' maps stay above it (CGAL's bull: shortest edge 1e-13).
+/// development meshes' maps stay above it (CGAL's bull: shortest edge 5e-14).
 constexpr double ResolvableEdgeLength = 1e-14;
-/// A vertex whose edges reach this length is left where it is: it bounds the spread disk.
-constexpr double ResolvedEdgeLength = 1e-9;
 
 struct TipSpreadingResult
 {
@@ -45,7 +46,7 @@ struct TipSpreadingResult
 
 /// Spreads the tips of `x` (a map onto the unit sphere) whose edges are shorter than
 /// ResolvableEdgeLength, deepest first, until none is left or no disk helps.
-TipSpreadingResult SpreadUnresolvedTips(ExtendedPoints& x, const Triangles& triangles);
+TipSpreadingResult SpreadUnresolvedTips(NestedFrames& x, const Triangles& triangles);
 }
 
 #endif
