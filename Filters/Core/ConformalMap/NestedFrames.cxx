@@ -7,6 +7,7 @@ namespace mobius
 NestedFrames::NestedFrames(const Points& sphere)
   : Positions(sphere)
   , Deepest(static_cast<size_t>(sphere.rows()), -1)
+  , DeepestRow(static_cast<size_t>(sphere.rows()), -1)
 {
 }
 
@@ -16,8 +17,19 @@ Index NestedFrames::Find(const Level& level, Index v)
   return found != level.Members.end() && *found == v ? found - level.Members.begin() : -1;
 }
 
-Eigen::RowVector3d NestedFrames::Difference(Index a, Index b) const
+Eigen::RowVector3d NestedFrames::LevelDifference(Index a, Index b) const
 {
+  const int deepest = this->Deepest[a];
+  if (deepest >= 0 && deepest == this->Deepest[b])
+  {
+    // The usual case, two neighbours of one squeezed region: no search.
+    const Level& level = this->Levels[deepest];
+    const Index ra = this->DeepestRow[a], rb = this->DeepestRow[b];
+    if (level.Region[ra] == level.Region[rb])
+    {
+      return level.Local.row(ra) - level.Local.row(rb);
+    }
+  }
   for (int j = std::min(this->Deepest[a], this->Deepest[b]); j >= 0; --j)
   {
     const Level& level = this->Levels[j];
@@ -85,6 +97,7 @@ void NestedFrames::AddLevel(const std::vector<Index>& members, const std::vector
   {
     this->Positions.Set(members[m], originPoints[region[m]], offsets.row(static_cast<Index>(m)));
     this->Deepest[members[m]] = depth;
+    this->DeepestRow[members[m]] = static_cast<Index>(m);
   }
   this->Levels.push_back({ members, region, offsets });
 }

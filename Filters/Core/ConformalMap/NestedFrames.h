@@ -25,7 +25,11 @@ public:
 
   /// Point a minus point b, from the deepest level whose region holds both (or from the
   /// absolute positions if none does).
-  Eigen::RowVector3d Difference(Index a, Index b) const;
+  Eigen::RowVector3d Difference(Index a, Index b) const
+  {
+    return this->Deepest[a] < 0 || this->Deepest[b] < 0 ? this->Positions.Difference(a, b)
+                                                        : this->LevelDifference(a, b);
+  }
 
   /// The longest edge at each vertex.
   Vector LongestEdges(const Triangles& triangles) const;
@@ -49,12 +53,15 @@ private:
     std::vector<Index> Region;
     Eigen::MatrixXd Local;      ///< one row per member
   };
+  /// Difference of two vertices that are both in some level.
+  Eigen::RowVector3d LevelDifference(Index a, Index b) const;
   /// Row of vertex v in `level`, -1 if it is not a member.
   static Index Find(const Level& level, Index v);
 
   ExtendedPoints Positions;
   std::vector<Level> Levels;
   std::vector<int> Deepest; ///< per vertex: the deepest level holding it, -1 for none
+  std::vector<Index> DeepestRow; ///< per vertex: its row in that level
 };
 }
 
