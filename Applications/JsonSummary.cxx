@@ -138,6 +138,11 @@ std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
       << ", \"flipped_triangles\": " << Number(FieldValue(map, "FlippedTriangles"))
       << ", \"mean_quasi_conformal_distortion\": " << Number(FieldValue(map, "MeanQuasiConformalDistortion"))
       << ", \"max_quasi_conformal_distortion\": " << Number(FieldValue(map, "MaxQuasiConformalDistortion"))
+      << ", \"median_quasi_conformal_distortion\": " << Number(FieldValue(map, "MedianQuasiConformalDistortion"))
+      << ", \"p95_quasi_conformal_distortion\": " << Number(FieldValue(map, "P95QuasiConformalDistortion"))
+      << ", \"p99_quasi_conformal_distortion\": " << Number(FieldValue(map, "P99QuasiConformalDistortion"))
+      << ", \"squashed_area_share\": " << Number(FieldValue(map, "SquashedAreaShare"))
+      << ", \"smallest_sphere_area_share\": " << Number(FieldValue(map, "SmallestSphereAreaShare"))
       << ", \"centering_iterations\": " << Number(FieldValue(centered, "CenteringIterations"))
       << ", \"centering_degree\": " << Number(FieldValue(centered, "CenteringDegree"))
       << ", \"generalized_centering_iterations\": "
@@ -149,6 +154,12 @@ std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
   out << ", \"degenerate\": "
       << (FieldValue(map, "DegenerateMap") == 1 && reason && reason->GetNumberOfValues() > 0
              ? Quoted(reason->GetValue(0))
+             : std::string("null"));
+  // null, or what the user should know about a usable map (a squashed share of the surface).
+  auto warning = vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("MapWarning"));
+  out << ", \"warning\": "
+      << (warning && warning->GetNumberOfValues() > 0 && !warning->GetValue(0).empty()
+             ? Quoted(warning->GetValue(0))
              : std::string("null"))
       << "}";
   return out.str();

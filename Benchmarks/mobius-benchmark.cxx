@@ -480,8 +480,9 @@ int main(int argc, char* argv[])
   refineTable << "| mesh | V | Möbius mean | Möbius <= 0.1 | refined mean | refined <= 0.1 | "
                  "refinement s | bases s | candidates s | extension s | polish s | candidate kept |\n"
                  "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  mapTable << "| mesh | V | map s | flow steps | factorizations | mean QC | max QC | flips | center s | center steps | final mu |\n"
-              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  mapTable << "| mesh | V | map s | flow steps | factorizations | mean QC | max QC | median QC | p95 QC | "
+              "squashed % | flips | degenerate | center s | center steps | final mu |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   gridTable << "| mesh | N | scale grid s |\n|---|---:|---:|\n";
   registerTable << "| mesh | N | register s | B' | rotation error (deg) | registration error |\n"
                    "|---|---:|---:|---:|---:|---:|\n";
@@ -520,12 +521,15 @@ int main(int argc, char* argv[])
       centered = filter->GetOutput();
     });
     char row[512];
-    std::snprintf(row, sizeof(row), "| %s | %lld | %.3f | %.0f | %.0f | %.4f | %.1f | %.0f | %.4f | %.0f | %.1e |\n",
+    std::snprintf(row, sizeof(row),
+      "| %s | %lld | %.3f | %.0f | %.0f | %.4f | %.1f | %.3f | %.3f | %.3f | %.0f | %.0f | %.4f | %.0f | %.1e |\n",
       name.c_str(), static_cast<long long>(mesh->GetNumberOfPoints()), mapSeconds,
       Field(map, "ConformalFlowIterations"), Field(map, "ConformalFlowFactorizations"),
-      Field(map, "MeanQuasiConformalDistortion"),
-      Field(map, "MaxQuasiConformalDistortion"), Field(map, "FlippedTriangles"), centerSeconds,
-      Field(centered, "CenteringIterations"), Field(centered, "CenterOfMassNorm"));
+      Field(map, "MeanQuasiConformalDistortion"), Field(map, "MaxQuasiConformalDistortion"),
+      Field(map, "MedianQuasiConformalDistortion"), Field(map, "P95QuasiConformalDistortion"),
+      100 * Field(map, "SquashedAreaShare"), Field(map, "FlippedTriangles"),
+      Field(map, "DegenerateMap"), centerSeconds, Field(centered, "CenteringIterations"),
+      Field(centered, "CenterOfMassNorm"));
     mapTable << row;
 
     // The centered map rotated by a known rotation: registration must find its inverse.

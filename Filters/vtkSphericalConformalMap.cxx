@@ -2,6 +2,7 @@
 
 #include "ConformalMap.h"
 #include "MapDistortion.h"
+#include "MapVerdict.h"
 #include "MeshTopology.h"
 #include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
@@ -17,7 +18,6 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkMath.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 #include "vtkTriangleFilter.h"
@@ -335,6 +335,7 @@ int vtkSphericalConformalMap::ComputeOutput(
   parameters.IntrinsicDelaunay = this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_ON ||
     (this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_AUTOMATIC &&
       mobius::SmallestTriangleAngleDegrees(points, triangles) < this->IntrinsicDelaunayAngle);
+  parameters.IntrinsicDelaunayWhenFolded = this->IntrinsicDelaunay == INTRINSIC_DELAUNAY_AUTOMATIC;
   parameters.FlipRepairPasses = this->FlipRepairPasses;
   parameters.MobiusCentering = this->CenterBetweenSteps;
   parameters.LinearStart = this->LinearStart;
@@ -368,63 +369,17 @@ int vtkSphericalConformalMap::ComputeOutput(
     }
     return 0;
   }
-  // The reasons the map is degenerate, if it is: the output is still produced (a caller may
-  // want to look at it), but the field data says it carries no trustworthy correspondence.
-  std::vector<std::string> problems;
-  if (!result.Converged)
-  {
-    std::ostringstream problem;
-    problem << "the flow stopped after " << result.Iterations << " steps with relative change "
-            << result.RelativeChange << " above the tolerance " << this->ConvergenceTolerance;
-    problems.push_back(problem.str());
-  }
-  if (result.Distortion.FlippedTriangles > 0)
-  {
-    std::ostringstream problem;
-    problem << result.Distortion.FlippedTriangles
-            << " triangles are flipped on the sphere after the repair";
-    problems.push_back(problem.str());
-  }
-  // Spread over the sphere, even a tetrahedron's triangles span 37% of its area; a map
-  // whose vertices crowd into one spot spans almost none.
-  double sphereArea = 0;
-  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::Vector3d a = result.SpherePoints.row(triangles(t, 0)),
-                          b = result.SpherePoints.row(triangles(t, 1)),
-                          c = result.SpherePoints.row(triangles(t, 2));
-    sphereArea += 0.5 * (b - a).cross(c - a).norm();
-  }
-  const double coveredShare = sphereArea / (4 * vtkMath::Pi());
-  if (!(coveredShare >= 0.1))
-  {
-    std::ostringstream problem;
-    problem << "the map collapsed: its triangles span " << 100 * coveredShare
-            << "% of the sphere";
-    problems.push_back(problem.str());
-  }
-  // Area-weighted, real meshes stay below 2 (CGAL's bull, with triangles of 1e-3 degrees,
-  // 1.75); above 10 the triangles are squashed flat on average: a closed pentagonal prism
-  // reaches 5,000, and the correspondence read off such a map means nothing.
-  if (!(result.Distortion.MeanQuasiConformal <= 10))
-  {
-    std::ostringstream problem;
-    problem << "its triangles are squashed: mean quasi-conformal distortion "
-            << result.Distortion.MeanQuasiConformal << " (1 is conformal, real meshes stay below 2)";
-    problems.push_back(problem.str());
-  }
-  if (!result.Refinement.Success)
-  {
-    problems.push_back("the refinement of squeezed regions failed, which keep the flow's positions");
-  }
-  std::string degenerateReason;
-  for (const auto& problem : problems)
-  {
-    degenerateReason += (degenerateReason.empty() ? "" : "; ") + problem;
-  }
-  if (!degenerateReason.empty())
+  // A degenerate map is still output (a caller may want to look at it), but the field data
+  // says it carries no trustworthy correspondence, and why.
+  const mobius::MapVerdict verdict = mobius::JudgeConformalMap(result, this->ConvergenceTolerance);
+  const std::string degenerateReason = verdict.Reason();
+  if (verdict.Degenerate())
   {
     vtkWarningMacro(<< "The map is degenerate: " << degenerateReason << ".");
+  }
+  else if (!verdict.Warning.empty())
+  {
+    vtkWarningMacro(<< "The map is usable, but " << verdict.Warning << ".");
   }
 
   // Assemble the spherical map.
@@ -481,9 +436,14 @@ int vtkSphericalConformalMap::ComputeOutput(
   SetFieldValue(fieldData, "FlippedTriangles", static_cast<double>(result.Distortion.FlippedTriangles));
   SetFieldValue(fieldData, "MeanQuasiConformalDistortion", result.Distortion.MeanQuasiConformal);
   SetFieldValue(fieldData, "MaxQuasiConformalDistortion", result.Distortion.MaxQuasiConformal);
+  SetFieldValue(fieldData, "MedianQuasiConformalDistortion", result.Distortion.MedianQuasiConformal);
+  SetFieldValue(fieldData, "P95QuasiConformalDistortion", result.Distortion.P95QuasiConformal);
+  SetFieldValue(fieldData, "P99QuasiConformalDistortion", result.Distortion.P99QuasiConformal);
+  SetFieldValue(fieldData, "SquashedAreaShare", result.Distortion.SquashedAreaShare);
+  SetFieldValue(fieldData, "SmallestSphereAreaShare", result.Distortion.SmallestMappedAreaShare);
   const double areaRange[2] = { result.Distortion.MinAreaRatio, result.Distortion.MaxAreaRatio };
   mobius::vtk::SetFieldValues(fieldData, "AreaDistortionRange", areaRange, 2);
-  SetFieldValue(fieldData, "IntrinsicDelaunayUsed", parameters.IntrinsicDelaunay ? 1 : 0);
+  SetFieldValue(fieldData, "IntrinsicDelaunayUsed", result.IntrinsicDelaunayUsed ? 1 : 0);
   SetFieldValue(fieldData, "IntrinsicDelaunayFlips", static_cast<double>(result.IntrinsicFlips));
   SetFieldValue(fieldData, "MergedDuplicatePoints", static_cast<double>(duplicates));
   SetFieldValue(fieldData, "FilledHoles", static_cast<double>(filledHoles));
@@ -491,11 +451,15 @@ int vtkSphericalConformalMap::ComputeOutput(
   SetFieldValue(
     fieldData, "FlipRepairMovedVertices", static_cast<double>(result.FlipRepair.MovedVertices));
   SetFieldValue(fieldData, "SqueezedRegionRefinementFailed", result.Refinement.Success ? 0 : 1);
-  SetFieldValue(fieldData, "DegenerateMap", degenerateReason.empty() ? 0 : 1);
+  SetFieldValue(fieldData, "DegenerateMap", verdict.Degenerate() ? 1 : 0);
   vtkNew<vtkStringArray> reason;
   reason->SetName("DegenerateMapReason");
   reason->InsertNextValue(degenerateReason);
   fieldData->AddArray(reason);
+  vtkNew<vtkStringArray> warning;
+  warning->SetName("MapWarning");
+  warning->InsertNextValue(verdict.Degenerate() ? std::string() : verdict.Warning);
+  fieldData->AddArray(warning);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -41,17 +41,26 @@
  *   the sphere), `MeanQuasiConformalDistortion` (area-weighted mean over triangles of the
  *   ratio of the singular values of the linear map from the surface triangle to the
  *   spherical chord triangle; 1 is conformal), `MaxQuasiConformalDistortion`,
+ *   `MedianQuasiConformalDistortion`, `P95QuasiConformalDistortion`,
+ *   `P99QuasiConformalDistortion` (area-weighted quantiles: the distortion below which the
+ *   triangles holding 50, 95, 99% of the surface lie), `SquashedAreaShare` (0 to 1: the
+ *   share of the surface in triangles of distortion above 10), `SmallestSphereAreaShare`
+ *   (the smallest spherical triangle's area over 4 pi),
  *   `AreaDistortionRange` (2 doubles: min and max of spherical share / surface share of
  *   area per triangle), `IntrinsicDelaunayUsed` (0/1), `IntrinsicDelaunayFlips`, `MergedDuplicatePoints`, `FilledHoles`,
  *   `ReversedTriangleOrientation` (0/1), `FlipRepairMovedVertices`,
- *   `SqueezedRegionRefinementFailed` (0/1), `DegenerateMap` (0/1) and
- *   `DegenerateMapReason` (a string, empty for a good map).
+ *   `SqueezedRegionRefinementFailed` (0/1), `DegenerateMap` (0/1),
+ *   `DegenerateMapReason` (a string, empty for a good map) and `MapWarning` (a string, empty
+ *   unless a usable map squashes more than 1% of the surface).
  *
  * A map is degenerate (output anyway, with a warning; the caller decides) when triangles
  * are still flipped after the repair, when its triangles collapsed to a small part of the
- * sphere or are squashed (area-weighted mean quasi-conformal distortion above 10; real
- * meshes stay below 2), when the flow did not converge, or when the refinement of squeezed regions
- * failed. Such a map carries no trustworthy correspondence.
+ * sphere, when they squash more than half the surface (distortion above 10), when the flow
+ * did not converge, or when the refinement of squeezed regions failed
+ * (mobius::JudgeConformalMap, MapVerdict.h, holds the rule). Such a map carries no
+ * trustworthy correspondence. Thin parts (tails, fingers) are squeezed exponentially by any
+ * conformal map and can be extreme without spoiling the rest: a map squashing more than 1%
+ * of the surface is used, with a warning naming the share.
  *
  * @sa vtkMobiusCenter
  */
@@ -149,7 +158,9 @@ public:
    * 5730: the flow then folds triangles). On well-shaped meshes the input's own cotangent
    * weights give a slightly lower quasi-conformal distortion measured on its triangles.
    * AUTOMATIC (default) uses it when the smallest triangle angle is below
-   * IntrinsicDelaunayAngle; the field data `IntrinsicDelaunayUsed` says which was used.
+   * IntrinsicDelaunayAngle, or when the map made with the input's own weights folds
+   * (negative weights across non-Delaunay edges fold squeezed limbs: a decimated camel);
+   * the field data `IntrinsicDelaunayUsed` says which was used.
    */
   vtkSetClampMacro(IntrinsicDelaunay, int, INTRINSIC_DELAUNAY_OFF, INTRINSIC_DELAUNAY_AUTOMATIC);
   vtkGetMacro(IntrinsicDelaunay, int);

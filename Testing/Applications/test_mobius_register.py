@@ -39,6 +39,12 @@ if summary:
     check(summary["demo_mean_error_over_sqrt_area"] < 0.04,
           f"demo error {summary['demo_mean_error_over_sqrt_area']}")
     check(summary["source_map"]["flipped_triangles"] == 0, "demo source map has no flips")
+    # The robust distortion figures: the cow's tail squeezes 0.3% of it (no warning, < 1%).
+    source = summary["source_map"]
+    check(1 <= source["median_quasi_conformal_distortion"] <= source["p95_quasi_conformal_distortion"]
+          <= source["p99_quasi_conformal_distortion"] and 0 <= source["squashed_area_share"] < 0.01
+          and 0 < source["smallest_sphere_area_share"] < 1 and source["warning"] is None,
+          f"demo source map's robust figures: {source}")
     check([s["name"] for s in summary["stages"]] ==
           ["conformal map (source)", "centering (source)", "conformal map (target)",
            "centering (target)", "rotational alignment", "dense correspondence", "refinement"],

@@ -152,6 +152,16 @@ int ExpectGoodMap(const Outcome& outcome, vtkIdType points, double maxMeanQC)
     std::cerr << "mean quasi-conformal distortion " << qc << " not in [1, " << maxMeanQC << "]\n";
     ++failures;
   }
+  // The robust figures: ordered quantiles, a share, a resolved smallest triangle.
+  const double median = mobius_test::FieldValue(out, "MedianQuasiConformalDistortion");
+  const double p95 = mobius_test::FieldValue(out, "P95QuasiConformalDistortion");
+  const double p99 = mobius_test::FieldValue(out, "P99QuasiConformalDistortion");
+  MOBIUS_EXPECT(median >= 1 && median <= p95 && p95 <= p99 &&
+    p99 <= mobius_test::FieldValue(out, "MaxQuasiConformalDistortion"));
+  const double squashed = mobius_test::FieldValue(out, "SquashedAreaShare");
+  MOBIUS_EXPECT(squashed >= 0 && squashed <= 1);
+  const double smallest = mobius_test::FieldValue(out, "SmallestSphereAreaShare");
+  MOBIUS_EXPECT(smallest > 0 && smallest < 1);
   MOBIUS_EXPECT(out->GetPointData()->GetArray("SurfacePoints") != nullptr);
   MOBIUS_EXPECT(out->GetCellData()->GetArray("SurfaceArea") != nullptr);
   MOBIUS_EXPECT(mobius_test::FieldValue(out, "DegenerateMap") == 0);

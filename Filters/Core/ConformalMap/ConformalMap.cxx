@@ -14,6 +14,7 @@
 #include <cmath>
 #include <exception>
 #include <sstream>
+#include <utility>
 
 namespace mobius
 {
@@ -222,6 +223,7 @@ ConformalMapResult MapToSphere(
   {
     return Fail(result, "cannot build the Laplacian: " + stiffnessInfo.Error);
   }
+  result.IntrinsicDelaunayUsed = p.IntrinsicDelaunay;
   result.IntrinsicFlips = stiffnessInfo.IntrinsicFlips;
 
   // The system matrix M_t + delta L has L's pattern (all diagonal entries are stored), so the
@@ -423,7 +425,25 @@ ConformalMapResult ComputeSphericalConformalMap(
 {
   try
   {
-    return MapToSphere(points, triangles, parameters);
+    ConformalMapResult result = MapToSphere(points, triangles, parameters);
+    if (result.Success && !parameters.IntrinsicDelaunay && parameters.IntrinsicDelaunayWhenFolded &&
+      result.FlipRepair.InitialFlips > 0)
+    {
+      ConformalMapParameters intrinsic = parameters;
+      intrinsic.IntrinsicDelaunay = true;
+      if (parameters.Progress)
+      {
+        // The bar stays where the first map left it (the second may still be aborted).
+        intrinsic.Progress = [&parameters](double) { return parameters.Progress(0.95); };
+      }
+      ConformalMapResult again = MapToSphere(points, triangles, intrinsic);
+      if (again.Success &&
+        again.Distortion.FlippedTriangles <= result.Distortion.FlippedTriangles)
+      {
+        result = std::move(again);
+      }
+    }
+    return result;
   }
   catch (const std::bad_alloc&)
   {

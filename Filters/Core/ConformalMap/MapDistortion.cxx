@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace mobius
 {
@@ -24,6 +26,39 @@ Eigen::Matrix2d PlanarEdges(
   edges(0, 1) = length > 0.0 ? e1.dot(e2) / length : 0.0;
   edges(1, 1) = length > 0.0 ? e1.cross(e2).norm() / length : 0.0;
   return edges;
+}
+
+// The values q of `samples` (value, weight), at which the samples below q hold the given
+// shares of the total weight, for ascending shares. Sorts `samples`.
+std::vector<double> WeightedQuantiles(
+  std::vector<std::pair<double, double>>& samples, const std::vector<double>& shares)
+{
+  std::vector<double> quantiles(shares.size(), 1.0);
+  if (samples.empty())
+  {
+    return quantiles;
+  }
+  std::sort(samples.begin(), samples.end());
+  double total = 0.0;
+  for (const auto& sample : samples)
+  {
+    total += sample.second;
+  }
+  double below = 0.0;
+  size_t next = 0, s = 0;
+  for (; s < samples.size() && next < shares.size(); ++s)
+  {
+    below += samples[s].second;
+    while (next < shares.size() && below >= shares[next] * total)
+    {
+      quantiles[next++] = samples[s].first;
+    }
+  }
+  for (; next < shares.size(); ++next)
+  {
+    quantiles[next] = samples.back().first; // rounding left the last share unreached
+  }
+  return quantiles;
 }
 }
 
@@ -76,7 +111,9 @@ MapDistortion MeasureMapDistortion(
     d.FlippedTriangles += SignedVolume(q0, q1, q2) <= 0.0 ? 1 : 0;
   }
   const double originalTotal = originalArea.sum(), mappedTotal = mappedArea.sum();
-  double weightedSum = 0.0, weight = 0.0;
+  double weightedSum = 0.0, weight = 0.0, squashed = 0.0;
+  std::vector<std::pair<double, double>> samples; // (distortion, original area)
+  samples.reserve(static_cast<size_t>(m));
   d.MaxQuasiConformal = 1.0;
   d.MinAreaRatio = std::numeric_limits<double>::infinity();
   d.MaxAreaRatio = 0.0;
@@ -95,6 +132,8 @@ MapDistortion MeasureMapDistortion(
     }
     weightedSum += originalArea[t] * qc;
     weight += originalArea[t];
+    squashed += qc > SquashedQuasiConformalDistortion ? originalArea[t] : 0.0;
+    samples.emplace_back(qc, originalArea[t]);
     d.MaxQuasiConformal = std::max(d.MaxQuasiConformal, qc);
     // A map collapsed to a point has no area at all: every ratio is 0, not 0 / 0.
     const double ratio =
@@ -103,6 +142,13 @@ MapDistortion MeasureMapDistortion(
     d.MaxAreaRatio = std::max(d.MaxAreaRatio, ratio);
   }
   d.MeanQuasiConformal = weight > 0.0 ? weightedSum / weight : 1.0;
+  d.SquashedAreaShare = weight > 0.0 ? squashed / weight : 0.0;
+  const std::vector<double> quantiles = WeightedQuantiles(samples, { 0.5, 0.95, 0.99 });
+  d.MedianQuasiConformal = quantiles[0];
+  d.P95QuasiConformal = quantiles[1];
+  d.P99QuasiConformal = quantiles[2];
+  d.SmallestMappedAreaShare = m > 0 ? mappedArea.minCoeff() / (4.0 * M_PI) : 1.0;
+  d.MappedAreaShare = mappedTotal / (4.0 * M_PI);
   if (d.MaxAreaRatio == 0.0 && d.MinAreaRatio == std::numeric_limits<double>::infinity())
   {
     d.MinAreaRatio = d.MaxAreaRatio = 1.0; // nothing measured

@@ -10,6 +10,11 @@ namespace mobius
 /// The distortion of a triangle flattened to a segment or a point: unbounded, reported as
 /// 1e15, beyond which double precision cannot tell the two singular values apart.
 constexpr double MaximumQuasiConformalDistortion = 1e15;
+/// A triangle whose quasi-conformal distortion is above this is squashed: its map stretches
+/// one direction ten times more than the other (a conformal map of a smooth surface, well
+/// triangulated, stays below 2 almost everywhere; the triangles of a tail or finger that the
+/// map squeezes to a speck reach millions).
+constexpr double SquashedQuasiConformalDistortion = 10.0;
 
 struct MapDistortion
 {
@@ -22,9 +27,25 @@ struct MapDistortion
   /// counts as MaximumQuasiConformalDistortion.
   double MeanQuasiConformal = 1.0;
   double MaxQuasiConformal = 1.0;
+  /// Area-weighted quantiles of the same: the distortion below which the triangles holding
+  /// 50%, 95% and 99% of the surface's area lie. Unlike the mean, they are not carried off
+  /// by the few triangles of a part the map squeezes to a speck.
+  double MedianQuasiConformal = 1.0;
+  double P95QuasiConformal = 1.0;
+  double P99QuasiConformal = 1.0;
+  /// Share of the surface's area (0 to 1) in squashed triangles (distortion above
+  /// SquashedQuasiConformalDistortion).
+  double SquashedAreaShare = 0.0;
   /// Mapped area / original area per triangle, after scaling both totals to 1.
   double MinAreaRatio = 1.0;
   double MaxAreaRatio = 1.0;
+  /// The smallest mapped (flat) triangle's area over 4 pi, the unit sphere's: how small the
+  /// map squeezes a triangle. Double precision resolves positions on the unit sphere to
+  /// about 1e-16, so triangles below about 1e-28 of the sphere are at its limit.
+  double SmallestMappedAreaShare = 1.0;
+  /// The mapped (flat) triangles' total area over 4 pi: near 1 for a map that covers the
+  /// sphere, near 0 for one whose vertices crowd into one spot.
+  double MappedAreaShare = 1.0;
 };
 
 /// Six times the signed volume of the tetrahedron (0, a, b, c), computed as

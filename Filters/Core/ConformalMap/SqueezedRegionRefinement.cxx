@@ -1,5 +1,8 @@
 #include "SqueezedRegionRefinement.h"
 
+#include "NestedFrames.h"
+#include "SqueezedTipSpreading.h"
+
 #ifdef MOBIUS_HAVE_CHOLMOD
 #include <Eigen/UmfPackSupport>
 #else
@@ -8,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace mobius
@@ -82,29 +86,97 @@ SparseMatrix MeanValueWeights(const Points& p, const Triangles& triangles)
   w.setFromTriplets(entries.begin(), entries.end());
   return SparseMatrix(w.transpose()); // column i holds row i's weights
 }
+
+// Re-solves the squeezed regions of one threshold: `local` numbers the members (-1 for the
+// rest). False if the factorization or the solution failed.
+bool ResolveRegions(NestedFrames& frames, const SparseMatrix& weights,
+  const std::vector<Index>& members, const std::vector<Index>& local)
+{
+  const Index m = static_cast<Index>(members.size());
+  // Regions (connected components of the members) and each one's local origin: its first
+  // member's position. Rows of different regions never couple, so one factorization serves
+  // them all.
+  std::vector<Index> region(static_cast<size_t>(m), -1), stack, origins;
+  for (Index s = 0; s < m; ++s)
+  {
+    if (region[s] >= 0)
+    {
+      continue;
+    }
+    const Index id = static_cast<Index>(origins.size());
+    origins.push_back(members[s]);
+    region[s] = id;
+    stack.assign(1, s);
+    while (!stack.empty())
+    {
+      const Index r = stack.back();
+      stack.pop_back();
+      for (SparseMatrix::InnerIterator it(weights, members[r]); it; ++it)
+      {
+        const Index j = local[it.row()];
+        if (j >= 0 && region[j] < 0)
+        {
+          region[j] = id;
+          stack.push_back(j);
+        }
+      }
+    }
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 3);
+  for (Index r = 0; r < m; ++r)
+  {
+    const Index i = members[r];
+    const Index origin = origins[region[r]];
+    // Row r: sum_j w_ij (x_i - x_j) = 0, i.e. x_i is the weighted average of its
+    // neighbours.
+    double total = 0.0;
+    for (SparseMatrix::InnerIterator it(weights, i); it; ++it)
+    {
+      total += it.value();
+      const Index j = local[it.row()];
+      if (j >= 0)
+      {
+        entries.emplace_back(r, j, -it.value());
+      }
+      else
+      {
+        // Boundary values move right, relative to the origin (from the deepest level that
+        // holds both: accurate relative to their distance).
+        rhs.row(r) += it.value() * frames.Difference(it.row(), origin);
+      }
+    }
+    entries.emplace_back(r, r, total);
+  }
+  SparseMatrix system(m, m);
+  system.setFromTriplets(entries.begin(), entries.end());
+  system.makeCompressed();
+  RegionSolver solver;
+  if (!solver.Compute(system))
+  {
+    return false;
+  }
+  const Eigen::MatrixXd y = solver.Solve(rhs);
+  if (!y.allFinite())
+  {
+    return false;
+  }
+  frames.AddLevel(members, region, origins, y);
+  return true;
+}
 }
 
 SqueezedRegionRefinementResult RefineSqueezedRegions(
-  Points& x, const Triangles& triangles, const Points& original, double largestThreshold)
+  Points& sphere, const Triangles& triangles, const Points& original, double largestThreshold)
 {
   SqueezedRegionRefinementResult result;
-  const Index n = x.rows();
+  const Index n = sphere.rows();
+  NestedFrames frames(sphere);
   SparseMatrix weights; // built when the first squeezed region is found
   std::vector<char> refined(static_cast<size_t>(n), 0);
-  for (double tau = largestThreshold; tau > 1e-15; tau *= 1e-2)
+  Vector longest = frames.LongestEdges(triangles);
+  for (double tau = largestThreshold; tau > SmallestSqueezedRegionThreshold; tau *= 1e-2)
   {
-    // Longest edge at each vertex (over the mesh's triangles).
-    Vector longest = Vector::Zero(n);
-    for (Index t = 0; t < triangles.rows(); ++t)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
-        const double length = (x.row(a) - x.row(b)).norm();
-        longest[a] = std::max(longest[a], length);
-        longest[b] = std::max(longest[b], length);
-      }
-    }
     std::vector<Index> local(static_cast<size_t>(n), -1), members;
     for (Index i = 0; i < n; ++i)
     {
@@ -127,87 +199,44 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
         break;
       }
     }
-    const Index m = static_cast<Index>(members.size());
-    // Regions (connected components of the members) and each one's local origin c: the
-    // position of its first member. Rows of different regions never couple, so one
-    // factorization serves them all.
-    std::vector<Index> region(static_cast<size_t>(m), -1), stack;
-    std::vector<Eigen::RowVector3d> origin;
-    for (Index s = 0; s < m; ++s)
-    {
-      if (region[s] >= 0)
-      {
-        continue;
-      }
-      const Index id = static_cast<Index>(origin.size());
-      origin.push_back(x.row(members[s]));
-      region[s] = id;
-      stack.assign(1, s);
-      while (!stack.empty())
-      {
-        const Index r = stack.back();
-        stack.pop_back();
-        for (SparseMatrix::InnerIterator it(weights, members[r]); it; ++it)
-        {
-          const Index j = local[it.row()];
-          if (j >= 0 && region[j] < 0)
-          {
-            region[j] = id;
-            stack.push_back(j);
-          }
-        }
-      }
-    }
-    std::vector<Eigen::Triplet<double>> entries;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 3);
-    for (Index r = 0; r < m; ++r)
-    {
-      const Index i = members[r];
-      const Eigen::RowVector3d c = origin[region[r]];
-      // Row r: sum_j w_ij (x_i - x_j) = 0, i.e. x_i is the weighted average of its
-      // neighbours.
-      double total = 0.0;
-      for (SparseMatrix::InnerIterator it(weights, i); it; ++it)
-      {
-        total += it.value();
-        const Index j = local[it.row()];
-        if (j >= 0)
-        {
-          entries.emplace_back(r, j, -it.value());
-        }
-        else
-        {
-          rhs.row(r) += it.value() * (x.row(it.row()) - c); // boundary values move right
-        }
-      }
-      entries.emplace_back(r, r, total);
-    }
-    SparseMatrix system(m, m);
-    system.setFromTriplets(entries.begin(), entries.end());
-    system.makeCompressed();
-    RegionSolver solver;
-    if (!solver.Compute(system))
+    if (!ResolveRegions(frames, weights, members, local))
     {
       result.Success = false;
       break;
     }
-    const Eigen::MatrixXd y = solver.Solve(rhs);
-    if (!y.allFinite())
+    for (Index i : members)
     {
-      result.Success = false;
-      break;
-    }
-    for (Index r = 0; r < m; ++r)
-    {
-      const Eigen::RowVector3d p = origin[region[r]] + y.row(r);
-      x.row(members[r]) = p / p.norm();
-      refined[members[r]] = 1;
+      refined[i] = 1;
     }
     ++result.Levels;
+    longest = frames.LongestEdges(triangles);
+  }
+  result.SmallestEdge = std::numeric_limits<double>::infinity();
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      result.SmallestEdge = std::min(
+        result.SmallestEdge, frames.Difference(triangles(t, k), triangles(t, (k + 1) % 3)).norm());
+    }
   }
   for (char r : refined)
   {
     result.RefinedVertices += r;
+  }
+  if (n > 0 && longest.minCoeff() < ResolvableEdgeLength)
+  {
+    result.Spreading = SpreadUnresolvedTips(frames, triangles);
+  }
+  // Back to doubles on the unit sphere: every edge the spreading reached is now resolved.
+  const ExtendedPoints& x = frames.Absolute();
+  for (Index i = 0; i < n; ++i)
+  {
+    if (x.High.row(i) != sphere.row(i) || !x.Low.row(i).isZero(0.0))
+    {
+      const Eigen::RowVector3d p = x.High.row(i) + x.Low.row(i);
+      sphere.row(i) = p / p.norm();
+    }
   }
   return result;
 }

@@ -13,14 +13,24 @@
 // the region: the rounding error is then relative to the region's own size. Repeating at
 // ever smaller thresholds resolves regions nested inside squeezed regions (a leg, its hoof).
 // Measured on the camel (threshold 1e-7): mean quasi-conformal distortion 1551 -> 1.39.
+//
+// Each level's solution is kept in its own coordinates (NestedFrames.h), so the nesting goes
+// on to any depth (1e-150): a hoof 1e-40 across is resolved relative to its own size. Where
+// the map squeezes a tip below what a double on the unit sphere resolves, the tip is then
+// spread out (SqueezedTipSpreading.h).
 #ifndef mobius_SqueezedRegionRefinement_h
 #define mobius_SqueezedRegionRefinement_h
 
 #include "CotangentLaplacian.h"
 #include "MeshTypes.h"
+#include "SqueezedTipSpreading.h"
 
 namespace mobius
 {
+/// The thresholds of the nested levels stop above this edge length, whose square double
+/// precision still holds (1e-300).
+constexpr double SmallestSqueezedRegionThreshold = 1e-150;
+
 struct SqueezedRegionRefinementResult
 {
   Index RefinedVertices = 0; ///< vertices re-solved at least once
@@ -28,12 +38,19 @@ struct SqueezedRegionRefinementResult
   /// False if the weights were not finite or a local factorization failed; the regions of
   /// that level and below keep the flow's positions.
   bool Success = true;
+  /// The shortest edge of the re-solved map on the unit sphere, before any spreading: how
+  /// far the map squeezes the thinnest part.
+  double SmallestEdge = 0.0;
+  /// What the spreading of unresolved tips did.
+  TipSpreadingResult Spreading;
 };
 
-/// `sphere` holds unit-sphere positions, `original` the surface the map is of. A vertex belongs to the squeezed region of threshold tau when all its edges on the
-/// sphere are shorter than tau; thresholds run from `largestThreshold` (1e-7 by default:
-/// below the scale where the flow's own map is accurate, so well-resolved maps are untouched) down by factors of
-/// 100 while any region remains.
+/// `sphere` holds unit-sphere positions, `original` the surface the map is of. A vertex
+/// belongs to the squeezed region of threshold tau when all its edges on the sphere are
+/// shorter than tau; thresholds run from `largestThreshold` (1e-7 by default: below the
+/// scale where the flow's own map is accurate, so well-resolved maps are untouched) down by
+/// factors of 100 while any region remains. Then tips with edges shorter than
+/// ResolvableEdgeLength are spread out.
 SqueezedRegionRefinementResult RefineSqueezedRegions(Points& sphere, const Triangles& triangles,
   const Points& original, double largestThreshold = 1e-7);
 }

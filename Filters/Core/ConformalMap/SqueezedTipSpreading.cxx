@@ -1,0 +1,249 @@
+#include "SqueezedTipSpreading.h"
+
+#include "MeshAdjacency.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace mobius
+{
+namespace
+{
+// Disks spread at most (each is one tip; real shapes have a few dozen at most).
+constexpr int MaximumSpreadTips = 100;
+// The exponents tried: 1, 0.9, 0.81, ... down to 1e-3 (quasi-conformal distortion 1000).
+constexpr double ExponentStep = 0.9;
+constexpr double SmallestExponentTried = 1e-3;
+// The disks tried, smallest first: each reaches no vertex with an edge this long. Larger
+// disks leave room for gentler spreadings (fewer folds) but distort more of the map.
+constexpr double DiskEdgeLengths[] = { 1e-9, 1e-7, 1e-5, 1e-3 };
+
+// A disk around a tip: the vertices inside it (which the spreading moves) and the triangles
+// touching them, with every corner's offset from the tip.
+struct Disk
+{
+  Index Center = -1;
+  double Radius = 0.0;
+  Eigen::RowVector3d Normal; // the sphere's normal at the tip
+  std::vector<Index> Members;
+  std::vector<Eigen::RowVector3d> MemberOffsets;
+  std::vector<Index> Triangles;
+  std::vector<Eigen::RowVector3d> CornerOffsets; // 3 per triangle
+  std::vector<char> CornerMoves;                 // 3 per triangle: inside the disk
+};
+
+// The disk around `tip` that reaches no vertex whose edges reach `resolved`.
+Disk FindDisk(const NestedFrames& x, const Triangles& triangles, const VertexLists& around,
+  const Vector& longest, Index tip, double resolved)
+{
+  Disk disk;
+  disk.Center = tip;
+  const Eigen::RowVector3d center = x.Absolute().High.row(tip);
+  disk.Normal = center.normalized();
+  disk.Radius = std::numeric_limits<double>::infinity();
+  for (Index v = 0; v < longest.size(); ++v)
+  {
+    if (longest[v] >= resolved)
+    {
+      disk.Radius = std::min(disk.Radius, x.Difference(v, tip).norm());
+    }
+  }
+  if (!std::isfinite(disk.Radius))
+  {
+    return disk;
+  }
+  std::vector<char> listed(static_cast<size_t>(triangles.rows()), 0);
+  for (Index v = 0; v < longest.size(); ++v)
+  {
+    const Eigen::RowVector3d offset = x.Difference(v, tip);
+    if (offset.norm() < disk.Radius)
+    {
+      disk.Members.push_back(v);
+      disk.MemberOffsets.push_back(offset);
+      for (Index k = around.Begin(v); k < around.End(v); ++k)
+      {
+        const Index t = around.Items[k];
+        if (!listed[t])
+        {
+          listed[t] = 1;
+          disk.Triangles.push_back(t);
+        }
+      }
+    }
+  }
+  for (Index t : disk.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::RowVector3d offset = x.Difference(triangles(t, k), tip);
+      disk.CornerOffsets.push_back(offset);
+      disk.CornerMoves.push_back(offset.norm() < disk.Radius ? 1 : 0);
+    }
+  }
+  return disk;
+}
+
+// The radial power map of the disk: rho -> R (rho / R)^a. (A collar easing the slope from 1
+// at the disk's edge to a inside left more folds on the generated branches, not fewer.)
+Eigen::RowVector3d Spread(const Eigen::RowVector3d& offset, double radius, double exponent)
+{
+  const double rho = offset.norm();
+  return rho > 0.0 ? Eigen::RowVector3d(offset * std::pow(rho / radius, exponent - 1.0)) : offset;
+}
+
+// The disk's triangles once spread with `exponent`: their shortest edge and how many fold.
+struct SpreadQuality
+{
+  double Shortest = 0.0;
+  Index Folded = 0;
+};
+
+SpreadQuality Evaluate(const Disk& disk, double exponent)
+{
+  SpreadQuality quality;
+  quality.Shortest = std::numeric_limits<double>::infinity();
+  for (size_t t = 0; t < disk.Triangles.size(); ++t)
+  {
+    Eigen::RowVector3d q[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const size_t c = 3 * t + k;
+      q[k] = disk.CornerMoves[c] ? Spread(disk.CornerOffsets[c], disk.Radius, exponent)
+                                 : disk.CornerOffsets[c];
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      quality.Shortest = std::min(quality.Shortest, (q[(k + 1) % 3] - q[k]).norm());
+    }
+    quality.Folded += disk.Normal.dot((q[1] - q[0]).cross(q[2] - q[0])) <= 0.0 ? 1 : 0;
+  }
+  return quality;
+}
+
+// A spreading of one disk: the exponent and what it gives.
+struct SpreadChoice
+{
+  double Exponent = 1.0;
+  SpreadQuality Quality;
+  /// Every edge resolved.
+  bool Resolved() const { return this->Quality.Shortest >= ResolvableEdgeLength; }
+  /// Better: resolved before not; then fewer folds; then (both unresolved) a longer
+  /// shortest edge; then a larger exponent (less distortion).
+  bool Better(const SpreadChoice& other) const
+  {
+    if (this->Resolved() != other.Resolved())
+    {
+      return this->Resolved();
+    }
+    if (this->Resolved() && this->Quality.Folded != other.Quality.Folded)
+    {
+      return this->Quality.Folded < other.Quality.Folded;
+    }
+    if (!this->Resolved() && this->Quality.Shortest != other.Quality.Shortest)
+    {
+      return this->Quality.Shortest > other.Quality.Shortest;
+    }
+    return this->Exponent > other.Exponent;
+  }
+};
+
+// The best exponent for the disk (see SpreadChoice::Better). Folds the spreading leaves (a
+// straight edge cutting inside the next ring when the rings come closer than the polygon's
+// sagitta) are few and the flip repair's to undo.
+SpreadChoice ChooseExponent(const Disk& disk)
+{
+  SpreadChoice best;
+  best.Quality = Evaluate(disk, 1.0);
+  for (double a = ExponentStep; a >= SmallestExponentTried; a *= ExponentStep)
+  {
+    SpreadChoice choice;
+    choice.Exponent = a;
+    choice.Quality = Evaluate(disk, a);
+    if (choice.Better(best))
+    {
+      best = choice;
+    }
+  }
+  return best;
+}
+}
+
+TipSpreadingResult SpreadUnresolvedTips(NestedFrames& x, const Triangles& triangles)
+{
+  TipSpreadingResult result;
+  const Index n = x.Absolute().High.rows();
+  const VertexLists around = VertexTriangles(n, triangles);
+  std::vector<char> moved(static_cast<size_t>(n), 0), abandoned(static_cast<size_t>(n), 0);
+  Vector longest = x.LongestEdges(triangles);
+  for (int tip = 0; tip < MaximumSpreadTips; ++tip)
+  {
+    // The deepest vertex not given up on.
+    Index deepest = -1;
+    for (Index v = 0; v < n; ++v)
+    {
+      if (!abandoned[v] && longest[v] < ResolvableEdgeLength &&
+        (deepest < 0 || longest[v] < longest[deepest]))
+      {
+        deepest = v;
+      }
+    }
+    if (deepest < 0)
+    {
+      break;
+    }
+    // The disk with the best spreading (the smallest, of equal ones).
+    Disk disk;
+    SpreadChoice choice;
+    for (double resolved : DiskEdgeLengths)
+    {
+      Disk candidate = FindDisk(x, triangles, around, longest, deepest, resolved);
+      const SpreadChoice candidateChoice = ChooseExponent(candidate);
+      if (disk.Center < 0 || candidateChoice.Better(choice))
+      {
+        disk = std::move(candidate);
+        choice = candidateChoice;
+      }
+    }
+    const double exponent = choice.Exponent;
+    if (exponent < 1.0)
+    {
+      const ExtendedPoint center = x.Absolute().Point(disk.Center);
+      for (size_t m = 0; m < disk.Members.size(); ++m)
+      {
+        x.MoveAbsolute(disk.Members[m], center, Spread(disk.MemberOffsets[m], disk.Radius, exponent));
+        moved[disk.Members[m]] = 1;
+      }
+      ++result.SpreadTips;
+      result.SmallestExponent = std::min(result.SmallestExponent, exponent);
+      longest = x.LongestEdges(triangles);
+    }
+    // A tip the disk could not resolve is not tried again (its disk would be the same).
+    abandoned[deepest] = 1;
+    if (!choice.Resolved())
+    {
+      for (Index v : disk.Members)
+      {
+        abandoned[v] = abandoned[v] || longest[v] < ResolvableEdgeLength;
+      }
+    }
+  }
+  for (Index v = 0; v < n; ++v)
+  {
+    result.SpreadVertices += moved[v];
+  }
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
+      // Each edge once (from the triangle that has it going up).
+      result.UnresolvedEdges += a < b && x.Difference(a, b).norm() < ResolvableEdgeLength ? 1 : 0;
+    }
+  }
+  return result;
+}
+}
