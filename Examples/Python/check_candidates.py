@@ -29,6 +29,7 @@ def write(registration, path):
     writer = vtkXMLPolyDataWriter()
     writer.SetFileName(path)
     writer.SetInputData(registration.polydata)
+    writer.SetDataModeToBinary()  # bookworm's expat cannot read VTK 9.2's appended data back
     if not writer.Write():
         raise SystemExit(f"cannot write {path}")
 
