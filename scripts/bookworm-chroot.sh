@@ -83,8 +83,15 @@ chroot_create() {
   mkdir -p "$root"
   tar -C "$root" --numeric-owner -xpf "$chroot_cache/base-$chroot_suite.tar" || return 1
   chroot_mount "$root"
-  chroot_run "$root" apt-get update -q > /dev/null || return 1
-  chroot_run "$root" apt-get dist-upgrade -y -q > /dev/null || return 1
+  chroot_upgrade "$root"
+}
+
+# apt-get update and dist-upgrade in the chroot; their output goes to its
+# /var/log/chroot-upgrade.log, shown if they fail.
+chroot_upgrade() {
+  local root="$1" log="$1/var/log/chroot-upgrade.log"
+  { chroot_run "$root" apt-get update -q && chroot_run "$root" apt-get dist-upgrade -y -q; } \
+    > "$log" 2>&1 || { tail -20 "$log" >&2; return 1; }
 }
 
 # The cached base: debootstrap from the machine's mirror, the machine's bookworm suites in
@@ -115,11 +122,7 @@ chroot_base() {
   # dpkg without a sync per file, as in Debian's container images: the tree is thrown away,
   # and the packages are what they are either way (ParaView's ~700 unpack much faster).
   echo force-unsafe-io > "$work/etc/dpkg/dpkg.cfg.d/unsafe-io"
-  (
-    chroot_mount "$work"
-    chroot_run "$work" apt-get update -q > /dev/null &&
-      chroot_run "$work" apt-get dist-upgrade -y -q > /dev/null
-  ) || return 1
+  (chroot_mount "$work" && chroot_upgrade "$work") || return 1
   rm -rf "$work"/var/lib/apt/lists/* "$work"/tmp/*
   tar -C "$work" --numeric-owner -cpf "$tarball.new" . && mv "$tarball.new" "$tarball" &&
     printf '%s\n' "$key" > "$tarball.key"

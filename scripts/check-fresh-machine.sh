@@ -93,7 +93,8 @@ else
     echo "check-fresh-machine: no commands under **Without ParaView.** in README.md"; exit 1
   fi
   printf '%s\n' "$commands" > "$logs/commands.sh"
-  chroot_run "$root" apt-get install -y -q --no-install-recommends ccache > /dev/null || exit 1
+  chroot_run "$root" apt-get install -y -q --no-install-recommends ccache \
+    > "$logs/ccache-install.log" 2>&1 || { tail -20 "$logs/ccache-install.log"; exit 1; }
   step "README, Without ParaView (ccache as compiler launcher)" plain-vtk.log \
     "export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache; set -e; $commands"
 fi
