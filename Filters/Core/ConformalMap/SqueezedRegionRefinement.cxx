@@ -164,6 +164,35 @@ bool ResolveRegions(NestedFrames& frames, const SparseMatrix& weights,
   frames.AddLevel(members, region, origins, y);
   return true;
 }
+
+double ShortestEdge(const NestedFrames& frames, const Triangles& triangles)
+{
+  double shortest = std::numeric_limits<double>::infinity();
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      shortest =
+        std::min(shortest, frames.Difference(triangles(t, k), triangles(t, (k + 1) % 3)).norm());
+    }
+  }
+  return shortest;
+}
+
+// Back to doubles on the unit sphere (every edge the spreading reached is resolved by now);
+// untouched points keep their bits.
+void WriteBack(const NestedFrames& frames, Points& sphere)
+{
+  const ExtendedPoints& x = frames.Absolute();
+  for (Index i = 0; i < sphere.rows(); ++i)
+  {
+    if (x.High.row(i) != sphere.row(i) || !x.Low.row(i).isZero(0.0))
+    {
+      const Eigen::RowVector3d p = x.High.row(i) + x.Low.row(i);
+      sphere.row(i) = p / p.norm();
+    }
+  }
+}
 }
 
 SqueezedRegionRefinementResult RefineSqueezedRegions(
@@ -211,15 +240,7 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
     ++result.Levels;
     longest = frames.LongestEdges(triangles);
   }
-  result.SmallestEdge = std::numeric_limits<double>::infinity();
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      result.SmallestEdge = std::min(
-        result.SmallestEdge, frames.Difference(triangles(t, k), triangles(t, (k + 1) % 3)).norm());
-    }
-  }
+  result.SmallestEdge = ShortestEdge(frames, triangles);
   for (char r : refined)
   {
     result.RefinedVertices += r;
@@ -228,16 +249,7 @@ SqueezedRegionRefinementResult RefineSqueezedRegions(
   {
     result.Spreading = SpreadUnresolvedTips(frames, triangles);
   }
-  // Back to doubles on the unit sphere: every edge the spreading reached is now resolved.
-  const ExtendedPoints& x = frames.Absolute();
-  for (Index i = 0; i < n; ++i)
-  {
-    if (x.High.row(i) != sphere.row(i) || !x.Low.row(i).isZero(0.0))
-    {
-      const Eigen::RowVector3d p = x.High.row(i) + x.Low.row(i);
-      sphere.row(i) = p / p.norm();
-    }
-  }
+  WriteBack(frames, sphere);
   return result;
 }
 }

@@ -170,6 +170,55 @@ SpreadChoice ChooseExponent(const Disk& disk)
   }
   return best;
 }
+
+// The vertex with the shortest longest edge below ResolvableEdgeLength, not given up on; -1
+// if there is none.
+Index DeepestVertex(const Vector& longest, const std::vector<char>& abandoned)
+{
+  Index deepest = -1;
+  for (Index v = 0; v < longest.size(); ++v)
+  {
+    if (!abandoned[v] && longest[v] < ResolvableEdgeLength &&
+      (deepest < 0 || longest[v] < longest[deepest]))
+    {
+      deepest = v;
+    }
+  }
+  return deepest;
+}
+
+// The disk around `tip` with the best spreading (the smallest, of equal ones).
+Disk BestDisk(const NestedFrames& x, const Triangles& triangles, const VertexLists& around,
+  const Vector& longest, Index tip, SpreadChoice& choice)
+{
+  Disk disk;
+  for (double resolved : DiskEdgeLengths)
+  {
+    Disk candidate = FindDisk(x, triangles, around, longest, tip, resolved);
+    const SpreadChoice candidateChoice = ChooseExponent(candidate);
+    if (disk.Center < 0 || candidateChoice.Better(choice))
+    {
+      disk = std::move(candidate);
+      choice = candidateChoice;
+    }
+  }
+  return disk;
+}
+
+Index CountUnresolvedEdges(const NestedFrames& x, const Triangles& triangles)
+{
+  Index count = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
+      // Each edge once (from the triangle that has it going up).
+      count += a < b && x.Difference(a, b).norm() < ResolvableEdgeLength ? 1 : 0;
+    }
+  }
+  return count;
+}
 }
 
 TipSpreadingResult SpreadUnresolvedTips(NestedFrames& x, const Triangles& triangles)
@@ -181,69 +230,39 @@ TipSpreadingResult SpreadUnresolvedTips(NestedFrames& x, const Triangles& triang
   Vector longest = x.LongestEdges(triangles);
   for (int tip = 0; tip < MaximumSpreadTips; ++tip)
   {
-    // The deepest vertex not given up on.
-    Index deepest = -1;
-    for (Index v = 0; v < n; ++v)
-    {
-      if (!abandoned[v] && longest[v] < ResolvableEdgeLength &&
-        (deepest < 0 || longest[v] < longest[deepest]))
-      {
-        deepest = v;
-      }
-    }
+    const Index deepest = DeepestVertex(longest, abandoned);
     if (deepest < 0)
     {
       break;
     }
-    // The disk with the best spreading (the smallest, of equal ones).
-    Disk disk;
     SpreadChoice choice;
-    for (double resolved : DiskEdgeLengths)
-    {
-      Disk candidate = FindDisk(x, triangles, around, longest, deepest, resolved);
-      const SpreadChoice candidateChoice = ChooseExponent(candidate);
-      if (disk.Center < 0 || candidateChoice.Better(choice))
-      {
-        disk = std::move(candidate);
-        choice = candidateChoice;
-      }
-    }
-    const double exponent = choice.Exponent;
-    if (exponent < 1.0)
+    const Disk disk = BestDisk(x, triangles, around, longest, deepest, choice);
+    if (choice.Exponent < 1.0)
     {
       const ExtendedPoint center = x.Absolute().Point(disk.Center);
       for (size_t m = 0; m < disk.Members.size(); ++m)
       {
-        x.MoveAbsolute(disk.Members[m], center, Spread(disk.MemberOffsets[m], disk.Radius, exponent));
+        x.MoveAbsolute(
+          disk.Members[m], center, Spread(disk.MemberOffsets[m], disk.Radius, choice.Exponent));
         moved[disk.Members[m]] = 1;
       }
       ++result.SpreadTips;
-      result.SmallestExponent = std::min(result.SmallestExponent, exponent);
+      result.SmallestExponent = std::min(result.SmallestExponent, choice.Exponent);
       longest = x.LongestEdges(triangles);
     }
-    // A tip the disk could not resolve is not tried again (its disk would be the same).
+    // A tip is tried once; the disk's vertices left unresolved are given up on too (their
+    // disks would be the same).
     abandoned[deepest] = 1;
-    if (!choice.Resolved())
+    for (Index v : disk.Members)
     {
-      for (Index v : disk.Members)
-      {
-        abandoned[v] = abandoned[v] || longest[v] < ResolvableEdgeLength;
-      }
+      abandoned[v] = abandoned[v] || (!choice.Resolved() && longest[v] < ResolvableEdgeLength);
     }
   }
   for (Index v = 0; v < n; ++v)
   {
     result.SpreadVertices += moved[v];
   }
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
-      // Each edge once (from the triangle that has it going up).
-      result.UnresolvedEdges += a < b && x.Difference(a, b).norm() < ResolvableEdgeLength ? 1 : 0;
-    }
-  }
+  result.UnresolvedEdges = CountUnresolvedEdges(x, triangles);
   return result;
 }
 }
