@@ -7,10 +7,9 @@
 /// hands blocks above 128 KB to mmap and gives the heap's free top back to the kernel, so
 /// each such array is fresh memory again, paid for by one page fault per 4 KB page on first
 /// touch. Raising both thresholds (to 32 MB and 1 GB) keeps those pages in the process for
-/// reuse: on the 26K + 38K vertex pair (`--refine none`) 14% less CPU time (1.74 s instead
-/// of 2.02 s, on the development VM, where faults are dear), for a peak resident size of
-/// 145 MB instead of 136 MB. Memory goes back to the system when the program ends. Does
-/// nothing with another C library.
+/// reuse: fewer page faults, which cost a noticeable share of the CPU time (README,
+/// Performance), for a slightly larger peak resident size. Memory goes back to the system
+/// when the program ends. Does nothing with another C library.
 void KeepFreedMemoryForReuse();
 
 #endif

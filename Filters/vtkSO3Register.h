@@ -77,11 +77,10 @@ public:
 
   /**
    * Estimated peak memory in bytes of a registration at `resolution`: the two meshes'
-   * scale-factor grids, their transforms and the correlation grow as N^2 (measured on
-   * CGAL's bunny: about 70 bytes per grid cell, 384 MB in all at N = 2048); the estimate,
-   * 160 bytes per cell and 50 MB, errs on the safe side. RequestData refuses a Resolution
-   * whose estimate exceeds the machine's physical memory, instead of failing part way
-   * through the allocations.
+   * scale-factor grids, their transforms and the correlation grow as N^2; the estimate,
+   * 160 bytes per cell and 50 MB, is about twice what a registration was measured to use,
+   * so it errs on the safe side. RequestData refuses a Resolution whose estimate exceeds
+   * the machine's physical memory, instead of failing part way through the allocations.
    */
   static double EstimateMemory(int resolution);
 

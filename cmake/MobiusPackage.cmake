@@ -62,16 +62,28 @@ file(CHMOD "${CMAKE_BINARY_DIR}/debian/triggers" PERMISSIONS OWNER_READ OWNER_WR
 set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA "${mobius_control_files}")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 
-# Debian's documentation files: the copyright (the project has no licence yet: the file
-# says so) and the changelog (gzipped, reproducibly).
+# Debian's documentation files: the copyright, in Debian's machine-readable format, its
+# notice and licence text taken from LICENSE (one place for them), and the changelog
+# (gzipped, reproducibly).
 set(mobius_doc_destination "${CMAKE_INSTALL_DATAROOTDIR}/doc/mobius-registration")
+file(READ "${CMAKE_SOURCE_DIR}/LICENSE" mobius_licence)
+if (NOT mobius_licence MATCHES "\nCopyright \\(c\\) ([^\n]+)\n\n(.+)$")
+  message(FATAL_ERROR "${CMAKE_SOURCE_DIR}/LICENSE has no 'Copyright (c) YEAR, HOLDER' line before its text")
+endif ()
+string(REPLACE ", " " " mobius_copyright "${CMAKE_MATCH_1}")
+# The licence text as a field's continuation lines: each indented, an empty line as " .".
+string(STRIP "${CMAKE_MATCH_2}" mobius_licence_text)
+string(REGEX REPLACE "\n\n" "\n.\n" mobius_licence_text "${mobius_licence_text}")
+string(REGEX REPLACE "\n" "\n " mobius_licence_text " ${mobius_licence_text}")
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${CMAKE_SOURCE_DIR}/LICENSE")
+configure_file("${CMAKE_CURRENT_LIST_DIR}/debian/copyright.in" "${CMAKE_BINARY_DIR}/debian/copyright" @ONLY)
 configure_file("${CMAKE_CURRENT_LIST_DIR}/debian/changelog.in" "${CMAKE_BINARY_DIR}/debian/changelog" @ONLY)
 execute_process(COMMAND "${MOBIUS_GZIP}" -9 -n -f -k "${CMAKE_BINARY_DIR}/debian/changelog"
   RESULT_VARIABLE mobius_gzip_failed)
 if (mobius_gzip_failed)
   message(FATAL_ERROR "gzip could not compress ${CMAKE_BINARY_DIR}/debian/changelog")
 endif ()
-install(FILES "${CMAKE_CURRENT_LIST_DIR}/debian/copyright" "${CMAKE_BINARY_DIR}/debian/changelog.gz"
+install(FILES "${CMAKE_BINARY_DIR}/debian/copyright" "${CMAKE_BINARY_DIR}/debian/changelog.gz"
   DESTINATION "${mobius_doc_destination}")
 install(FILES "${CMAKE_SOURCE_DIR}/README.md" DESTINATION "${mobius_doc_destination}")
 include(CPack)

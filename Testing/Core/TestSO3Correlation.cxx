@@ -3,9 +3,11 @@
 // (with derivatives) against the direct Wigner-D sum, and recovery of random rotations and
 // reflections of a random smooth band-limited function to a small fraction of a degree.
 #include "CoreTest.h"
+#include "CorrelationChecks.h"
 #include "Rotation.h"
 #include "SO3Correlation.h"
 #include "SO3CorrelationTensor.h"
+#include "SphericalHarmonicSeries.h"
 #include "SphericalHarmonics.h"
 
 #include <Eigen/Dense>

@@ -2,6 +2,7 @@
 // closed forms and conventions (Condon-Shortley phase, half-cell azimuth), round trips up to
 // B = 512, agreement with direct evaluation, heat smoothing.
 #include "CoreTest.h"
+#include "SphericalHarmonicSeries.h"
 #include "SphericalHarmonics.h"
 
 #include <algorithm>

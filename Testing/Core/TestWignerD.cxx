@@ -3,6 +3,7 @@
 // each other; orthogonality and the group property d(a) d(b) = d(a + b) at high degree.
 #include "CoreTest.h"
 #include "WignerD.h"
+#include "WignerSmallDMatrix.h"
 
 #include <Eigen/Dense>
 

@@ -63,6 +63,40 @@ for pattern in ("bin/mobius-register", "bin/mobius-benchmark", "share/man/man1/m
     check(installed(pattern), f"the install has no {pattern}")
 check(not installed("**/*Test*"), f"tests were installed: {installed('**/*Test*')[:5]}")
 
+
+def copyright_paragraphs(path):
+    """The paragraphs of a Debian machine-readable copyright file, as {field: value}
+    (continuation lines joined with newlines, their leading space and "." lines undone)."""
+    paragraphs = []
+    for block in open(path, encoding="utf-8").read().strip().split("\n\n"):
+        fields, field = {}, None
+        for line in block.split("\n"):
+            if line.startswith(" "):
+                fields[field] += "\n" + ("" if line == " ." else line[1:])
+            else:
+                field, _, value = line.partition(":")
+                fields[field] = value.strip()
+        paragraphs.append(fields)
+    return paragraphs
+
+
+# The copyright file (Debian's format 1.0): every Files paragraph names its copyright and a
+# licence whose text is given, the project's text is LICENSE's, and each pattern but "*"
+# matches an installed file.
+header, *paragraphs = copyright_paragraphs(installed("share/doc/mobius-registration/copyright")[0])
+check(header.get("Format") == "https://www.debian.org/doc/packaging-manuals/copyright-format/1.0/",
+      f"copyright: not in Debian's format 1.0: {header}")
+licence_texts = {p["License"].split("\n")[0]: p["License"].partition("\n")[2]
+                 for p in paragraphs if "Files" not in p}
+project_licence = open(os.path.join(args.source, "LICENSE"), encoding="utf-8").read()
+check(licence_texts.get("BSD-3-Clause", "").strip() in project_licence and
+      len(licence_texts.get("BSD-3-Clause", "")) > 1000, "copyright: the BSD-3-Clause text is not LICENSE's")
+for files in (p for p in paragraphs if "Files" in p):
+    check(files.get("Copyright") and files.get("License") in licence_texts,
+          f"copyright: Files {files['Files']}: no Copyright, or a licence without its text")
+    check(files["Files"] == "*" or installed(files["Files"].replace("*/", "**/")),
+          f"copyright: Files {files['Files']} matches no installed file")
+
 # Every installed binary finds the project's library by a path relative to itself: its
 # RUNPATH holds only $ORIGIN-relative entries (no build folder, no absolute prefix), and
 # the dynamic linker, with no LD_LIBRARY_PATH, resolves the library to the staged copy.

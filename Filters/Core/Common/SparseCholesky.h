@@ -7,10 +7,11 @@
 // suits surface meshes: their graphs have small separators (O(sqrt N)), so the factor's
 // fill grows as N log N. Smaller matrices (below 50,000 rows) are factored by Eigen's
 // simplicial LDL^T with AMD, which is as fast there, as is every matrix when CHOLMOD is not
-// available (same interface, same results to rounding). Measured on a 200K-vertex mesh
-// (9 flow steps), the whole map takes 12.5 CPU seconds instead of 31 with the simplicial
-// one. Debian's CHOLMOD calls the reference BLAS unless an optimized one (OpenBLAS) is
-// installed as the libblas.so.3 alternative; the dense kernels are then a third of the time.
+// available (same interface, same results to rounding). On large meshes the supernodal
+// factorization makes the whole map several times cheaper than the simplicial one (README,
+// Performance). Debian's CHOLMOD calls the reference BLAS unless an optimized one
+// (OpenBLAS) is installed as the libblas.so.3 alternative; the dense kernels are then a
+// large part of the time.
 #ifndef mobius_SparseCholesky_h
 #define mobius_SparseCholesky_h
 

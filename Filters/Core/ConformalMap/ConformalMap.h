@@ -95,9 +95,9 @@ struct ConformalMapParameters
   /// factorization for every step after the first, with the same steps and map.
   bool ReuseFactorization = true;
   /// ... for meshes of at least this many vertices: the supernodal factorization of large
-  /// meshes (SparseCholesky.h) costs 30 three-column solves (200K vertices: 1.9 s against
-  /// 0.06 s, loaded machine), the simplicial one of smaller meshes only 4-8 (26K: 0.22 s
-  /// against 0.044 s), about what the conjugate gradients take.
+  /// meshes (SparseCholesky.h) costs many times a three-column solve, so the conjugate
+  /// gradients save time, while the simplicial one of smaller meshes costs only a few solves,
+  /// about what the conjugate gradients take (README, Performance).
   Index ReuseFactorizationMinimumSize = 50000;
   /// Optional extra step between iterations (see FlowStepHook), after the centering.
   FlowStepHook BetweenSteps;

@@ -44,9 +44,8 @@ struct SampleGeodesics
 };
 
 /// Landmarks the sample scoring gives the edge-path searches (EdgePathGeodesics::
-/// BuildLandmarks). On FAUST_r pairs (about 5,000 vertices and samples) 8 landmarks made
-/// the scoring 2.1x faster than none (a pair's direct and mirror errors: 0.8 s of CPU time
-/// instead of 1.7 s for two pairs); 4 and 16 were slower than 8.
+/// BuildLandmarks): they keep the long searches of a turned map to a corridor (README,
+/// Accuracy). On pairs of about 5,000 vertices and samples, 8 scored faster than 4 or 16.
 constexpr int SampleScoreLandmarks = 8;
 
 /// Per sample k: the geodesic distance (see SampleGeodesics) on the target from vertex

@@ -28,8 +28,8 @@ struct LaplaceBeltramiBasis
 /// mass of the original triangles; otherwise that share of the consistent mass blended with
 /// the lumped one, both on the intrinsic Delaunay triangulation (see BuildMassMatrix and the
 /// README's Accuracy section: 0.5 makes the eigenfunctions of a mesh and of a
-/// re-triangulation of it agree better, but maps some bent or twisted pairs worse and costs
-/// 1.6x the time, so it is not the default), by shift-invert Lanczos (Spectra) on a sparse
+/// re-triangulation of it agree better, but maps some bent or twisted pairs worse and takes
+/// longer, so it is not the default), by shift-invert Lanczos (Spectra) on a sparse
 /// Cholesky factorization, with single-precision Lanczos vectors and a double-precision
 /// Rayleigh-Ritz step (eigenfunctions mass-orthonormal to double precision; eigenvalues the
 /// Rayleigh quotients). Needs a closed, manifold, oriented mesh. Returns false with `error`

@@ -80,10 +80,6 @@ void ComputeWignerDeltaQuadrant(int l, double* quadrant);
 /// Δ^l_km for any -l <= k, m <= l from a quadrant filled by ComputeWignerDeltaQuadrant.
 double WignerDeltaFromQuadrant(const double* quadrant, int l, int k, int m);
 
-/// The full matrix d^l(β), (2l+1) x (2l+1), entry (m+l, n+l), via the Δ factorization
-/// (O(l^3); used for tests and small rotations).
-Eigen::MatrixXd WignerSmallDMatrix(int l, double beta);
-
 /// d^l_mn(β) for l = 0 .. lMax into values[l] (zero for l < max(|m|, |n|)), by the
 /// three-term recursion in l for fixed (m, n) from the closed form at l = max(|m|, |n|).
 /// Runs in long double so that starting values that would underflow a double survive.

@@ -78,11 +78,6 @@ void SmoothWithHeatKernel(SphericalHarmonicCoefficients& coefficients, double ti
 /// coefficients only within a degree, unitarily, so E_l does not change: a descriptor of a
 /// centered map that needs no alignment (their sum is the integral of f^2).
 std::vector<double> DegreeEnergies(const SphericalHarmonicCoefficients& coefficients);
-
-/// Direct evaluation of sum f_lm Y_lm at one point (all m, negative ones included), O(B^2).
-/// Slow; for tests and sub-grid checks.
-std::complex<double> EvaluateSphericalHarmonicSeries(
-  const SphericalHarmonicCoefficients& coefficients, double theta, double phi);
 }
 
 #endif

@@ -1,5 +1,5 @@
-// Subdivided icosahedra: well-shaped triangulations of the unit sphere, used by tests,
-// examples and benchmarks that must not depend on data files.
+// Subdivided icosahedra: well-shaped triangulations of the unit sphere, for the tests that
+// must not depend on data files.
 #ifndef mobius_Icosphere_h
 #define mobius_Icosphere_h
 

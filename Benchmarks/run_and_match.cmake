@@ -1,0 +1,26 @@
+# Runs a command and fails unless it exits 0 and its standard output matches PASS_REGEX
+# (ctest's PASS_REGULAR_EXPRESSION alone would ignore the exit status):
+#   cmake -DPASS_REGEX=REGEX -P run_and_match.cmake COMMAND [ARG...]
+# The arguments after the script's own path (CMAKE_ARGV: cmake, the -D options, -P, the path).
+set(command)
+set(argument_index 0)
+math(EXPR last "${CMAKE_ARGC} - 1")
+foreach (i RANGE ${last})
+  if (argument_index GREATER 0 AND i GREATER argument_index)
+    string(REPLACE ";" "\\;" argument "${CMAKE_ARGV${i}}")
+    list(APPEND command "${argument}")
+  elseif (CMAKE_ARGV${i} STREQUAL "-P")
+    math(EXPR argument_index "${i} + 1")
+  endif ()
+endforeach ()
+if (NOT command OR NOT DEFINED PASS_REGEX)
+  message(FATAL_ERROR "usage: cmake -DPASS_REGEX=REGEX -P run_and_match.cmake COMMAND [ARG...]")
+endif ()
+execute_process(COMMAND ${command} OUTPUT_VARIABLE output RESULT_VARIABLE status)
+message("${output}")
+if (NOT status EQUAL 0)
+  message(FATAL_ERROR "the command exited with status ${status}")
+endif ()
+if (NOT output MATCHES "${PASS_REGEX}")
+  message(FATAL_ERROR "the output does not match '${PASS_REGEX}'")
+endif ()
