@@ -158,9 +158,9 @@ public:
    * 5730: the flow then folds triangles). On well-shaped meshes the input's own cotangent
    * weights give a slightly lower quasi-conformal distortion measured on its triangles.
    * AUTOMATIC (default) uses it when the smallest triangle angle is below
-   * IntrinsicDelaunayAngle, or when the map made with the input's own weights folds
-   * (negative weights across non-Delaunay edges fold squeezed limbs: a decimated camel);
-   * the field data `IntrinsicDelaunayUsed` says which was used.
+   * IntrinsicDelaunayAngle, or when the map made with the input's own weights keeps folds
+   * after the repair (negative weights across non-Delaunay edges fold squeezed limbs: a
+   * decimated camel); the field data `IntrinsicDelaunayUsed` says which was used.
    */
   vtkSetClampMacro(IntrinsicDelaunay, int, INTRINSIC_DELAUNAY_OFF, INTRINSIC_DELAUNAY_AUTOMATIC);
   vtkGetMacro(IntrinsicDelaunay, int);

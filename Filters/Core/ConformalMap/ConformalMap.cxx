@@ -427,7 +427,7 @@ ConformalMapResult ComputeSphericalConformalMap(
   {
     ConformalMapResult result = MapToSphere(points, triangles, parameters);
     if (result.Success && !parameters.IntrinsicDelaunay && parameters.IntrinsicDelaunayWhenFolded &&
-      result.FlipRepair.InitialFlips > 0)
+      result.Distortion.FlippedTriangles > 0)
     {
       ConformalMapParameters intrinsic = parameters;
       intrinsic.IntrinsicDelaunay = true;

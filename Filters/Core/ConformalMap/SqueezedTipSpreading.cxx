@@ -22,18 +22,19 @@ constexpr double SmallestExponentTried = 1e-3;
 // disks leave room for gentler spreadings (fewer folds) but distort more of the map.
 constexpr double DiskEdgeLengths[] = { 1e-9, 1e-7, 1e-5, 1e-3 };
 
-// A disk around a tip: the vertices inside it (which the spreading moves) and the triangles
-// touching them, with every corner's offset from the tip.
+// A disk around a tip: the vertices inside it (which the spreading moves), the triangles
+// touching them and those triangles' other corners, each vertex with its offset from the tip.
 struct Disk
 {
   Index Center = -1;
   double Radius = 0.0;
   Eigen::RowVector3d Normal; // the sphere's normal at the tip
-  std::vector<Index> Members;
-  std::vector<Eigen::RowVector3d> MemberOffsets;
+  /// The vertices inside the disk, then the other corners of its triangles, which stay.
+  std::vector<Index> Vertices;
+  std::vector<Eigen::RowVector3d> Offsets; // each vertex's offset from the tip
+  size_t Members = 0;                      // Vertices[0, Members) are inside
   std::vector<Index> Triangles;
-  std::vector<Eigen::RowVector3d> CornerOffsets; // 3 per triangle
-  std::vector<char> CornerMoves;                 // 3 per triangle: inside the disk
+  std::vector<Index> Corners; // 3 per triangle: positions in Vertices
 };
 
 // The disk around `tip` that reaches no vertex whose edges reach `resolved`.
@@ -56,32 +57,43 @@ Disk FindDisk(const NestedFrames& x, const Triangles& triangles, const VertexLis
   {
     return disk;
   }
-  std::vector<char> listed(static_cast<size_t>(triangles.rows()), 0);
+  // Each vertex's offset is computed once (and so is its spreading, for every exponent tried).
+  std::vector<Index> position(static_cast<size_t>(longest.size()), -1);
   for (Index v = 0; v < longest.size(); ++v)
   {
     const Eigen::RowVector3d offset = x.Difference(v, tip);
     if (offset.norm() < disk.Radius)
     {
-      disk.Members.push_back(v);
-      disk.MemberOffsets.push_back(offset);
-      for (Index k = around.Begin(v); k < around.End(v); ++k)
-      {
-        const Index t = around.Items[k];
-        if (!listed[t])
-        {
-          listed[t] = 1;
-          disk.Triangles.push_back(t);
-        }
-      }
+      position[v] = static_cast<Index>(disk.Vertices.size());
+      disk.Vertices.push_back(v);
+      disk.Offsets.push_back(offset);
     }
   }
-  for (Index t : disk.Triangles)
+  disk.Members = disk.Vertices.size();
+  std::vector<char> listed(static_cast<size_t>(triangles.rows()), 0);
+  for (size_t m = 0; m < disk.Members; ++m)
   {
-    for (int k = 0; k < 3; ++k)
+    const Index v = disk.Vertices[m];
+    for (Index k = around.Begin(v); k < around.End(v); ++k)
     {
-      const Eigen::RowVector3d offset = x.Difference(triangles(t, k), tip);
-      disk.CornerOffsets.push_back(offset);
-      disk.CornerMoves.push_back(offset.norm() < disk.Radius ? 1 : 0);
+      const Index t = around.Items[k];
+      if (listed[t])
+      {
+        continue;
+      }
+      listed[t] = 1;
+      disk.Triangles.push_back(t);
+      for (int c = 0; c < 3; ++c)
+      {
+        const Index corner = triangles(t, c);
+        if (position[corner] < 0)
+        {
+          position[corner] = static_cast<Index>(disk.Vertices.size());
+          disk.Vertices.push_back(corner);
+          disk.Offsets.push_back(x.Difference(corner, tip));
+        }
+        disk.Corners.push_back(position[corner]);
+      }
     }
   }
   return disk;
@@ -104,22 +116,22 @@ struct SpreadQuality
 
 SpreadQuality Evaluate(const Disk& disk, double exponent)
 {
+  std::vector<Eigen::RowVector3d> q(disk.Offsets);
+  for (size_t m = 0; m < disk.Members; ++m)
+  {
+    q[m] = Spread(disk.Offsets[m], disk.Radius, exponent);
+  }
   SpreadQuality quality;
   quality.Shortest = std::numeric_limits<double>::infinity();
   for (size_t t = 0; t < disk.Triangles.size(); ++t)
   {
-    Eigen::RowVector3d q[3];
+    const Index* corner = &disk.Corners[3 * t];
     for (int k = 0; k < 3; ++k)
     {
-      const size_t c = 3 * t + k;
-      q[k] = disk.CornerMoves[c] ? Spread(disk.CornerOffsets[c], disk.Radius, exponent)
-                                 : disk.CornerOffsets[c];
+      quality.Shortest = std::min(quality.Shortest, (q[corner[(k + 1) % 3]] - q[corner[k]]).norm());
     }
-    for (int k = 0; k < 3; ++k)
-    {
-      quality.Shortest = std::min(quality.Shortest, (q[(k + 1) % 3] - q[k]).norm());
-    }
-    quality.Folded += disk.Normal.dot((q[1] - q[0]).cross(q[2] - q[0])) <= 0.0 ? 1 : 0;
+    const Eigen::RowVector3d& a = q[corner[0]];
+    quality.Folded += disk.Normal.dot((q[corner[1]] - a).cross(q[corner[2]] - a)) <= 0.0 ? 1 : 0;
   }
   return quality;
 }
@@ -240,11 +252,11 @@ TipSpreadingResult SpreadUnresolvedTips(NestedFrames& x, const Triangles& triang
     if (choice.Exponent < 1.0)
     {
       const ExtendedPoint center = x.Absolute().Point(disk.Center);
-      for (size_t m = 0; m < disk.Members.size(); ++m)
+      for (size_t m = 0; m < disk.Members; ++m)
       {
         x.MoveAbsolute(
-          disk.Members[m], center, Spread(disk.MemberOffsets[m], disk.Radius, choice.Exponent));
-        moved[disk.Members[m]] = 1;
+          disk.Vertices[m], center, Spread(disk.Offsets[m], disk.Radius, choice.Exponent));
+        moved[disk.Vertices[m]] = 1;
       }
       ++result.SpreadTips;
       result.SmallestExponent = std::min(result.SmallestExponent, choice.Exponent);
@@ -253,8 +265,9 @@ TipSpreadingResult SpreadUnresolvedTips(NestedFrames& x, const Triangles& triang
     // A tip is tried once; the disk's vertices left unresolved are given up on too (their
     // disks would be the same).
     abandoned[deepest] = 1;
-    for (Index v : disk.Members)
+    for (size_t m = 0; m < disk.Members; ++m)
     {
+      const Index v = disk.Vertices[m];
       abandoned[v] = abandoned[v] || (!choice.Resolved() && longest[v] < ResolvableEdgeLength);
     }
   }
