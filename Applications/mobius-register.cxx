@@ -15,8 +15,10 @@
 #include "vtkSurfaceMeshReader.h"
 #include "vtkVersion.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -147,8 +149,8 @@ int RunSymmetry(const CommandLine& commandLine)
   {
     return Fail(error);
   }
-  if (!outputs.WriteMesh(result.Correspondence, error) ||
-    !outputs.WriteCsv(result.Correspondence, error) || !outputs.Commit(error))
+  if (!outputs.WriteCsv(result.Correspondence, error) ||
+    !outputs.WriteMesh(result.Correspondence, error) || !outputs.Commit(error))
   {
     return Fail(error);
   }
@@ -225,6 +227,22 @@ int RunOrbifold(const CommandLine& commandLine)
   return 0;
 }
 
+// Standard output flushed and without error: a summary lost to a full disk or a closed
+// pipe is a failure like any other.
+bool StandardOutputWritten()
+{
+  errno = 0;
+  std::cout.flush();
+  const bool flushed = std::fflush(stdout) == 0;
+  const bool written = flushed && std::cout.good() && !std::ferror(stdout);
+  if (!written)
+  {
+    Fail(std::string("standard output: cannot write (") +
+      (errno ? std::strerror(errno) : "write error") + ")");
+  }
+  return written;
+}
+
 int Run(int argc, char* argv[]);
 }
 
@@ -236,7 +254,8 @@ int main(int argc, char* argv[])
   KeepFreedMemoryForReuse();
   try
   {
-    return Run(argc, argv);
+    const int status = Run(argc, argv);
+    return status == 0 && !StandardOutputWritten() ? 1 : status;
   }
   catch (const std::bad_alloc&)
   {
@@ -322,8 +341,10 @@ int Run(int argc, char* argv[])
   {
     return Fail(error);
   }
-  if (!outputs.WriteMesh(result.Correspondence, error) ||
-    !outputs.WriteCsv(result.Correspondence, error) ||
+  // The CSV, usually the smaller file, first: under a file size limit between the two sizes
+  // a complete file is then taken back too (Testing/Applications/test_output_faults.py).
+  if (!outputs.WriteCsv(result.Correspondence, error) ||
+    !outputs.WriteMesh(result.Correspondence, error) ||
     !outputs.WritePicture(result.Aligned, result.Correspondence, error) || !outputs.Commit(error))
   {
     return Fail(error);
