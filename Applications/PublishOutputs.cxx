@@ -17,8 +17,8 @@ struct Placed
   std::string Path, Aside;
 };
 
-// A second name for the file at `path` (not followed if it is a link), so that it can come
-// back if the group fails. A hard link keeps `path` in place meanwhile; where the file
+// A second name for the regular file at `path`, so that it can come back if the group
+// fails; anything else there (a folder, a link, a device) is refused with EPERM. A hard link keeps `path` in place meanwhile; where the file
 // system has none, the file is moved aside.
 bool KeepAside(const std::string& path, std::string& aside)
 {
@@ -28,9 +28,10 @@ bool KeepAside(const std::string& path, std::string& aside)
   {
     return errno == ENOENT; // nothing to keep
   }
-  if (S_ISDIR(information.st_mode))
+  if (!S_ISREG(information.st_mode))
   {
-    return true; // a folder is not replaced: the rename will say so
+    errno = EPERM; // a folder, a link, a device: not ours to replace
+    return false;
   }
   for (int attempt = 0; attempt < 100; ++attempt)
   {
@@ -67,6 +68,15 @@ void TakeBack(const std::vector<Placed>& placed)
   {
     PutBack(*it);
   }
+}
+
+std::string NotReplaced(const std::string& path)
+{
+  if (errno == EPERM)
+  {
+    return path + ": is not a regular file (a folder, a link or a device): not replaced";
+  }
+  return path + ": cannot replace the existing file (" + std::strerror(errno) + ")";
 }
 
 std::string Problem(const std::string& path, bool replace)
@@ -107,7 +117,7 @@ bool PublishOutputs(const std::vector<SafeOutputFile*>& files, bool replace, std
     Placed next{ file->Path(), "" };
     if (replace && !KeepAside(next.Path, next.Aside))
     {
-      error = next.Path + ": cannot replace the existing file (" + std::strerror(errno) + ")";
+      error = NotReplaced(next.Path);
       TakeBack(placed);
       return false;
     }
@@ -134,4 +144,37 @@ bool PublishOutputs(const std::vector<SafeOutputFile*>& files, bool replace, std
     }
   }
   return true;
+}
+
+namespace
+{
+// Into what is at `path` already, a device (/dev/stdout) or a link followed as ever.
+bool WriteThrough(const std::string& path, const std::string& bytes, std::string& error)
+{
+  const int descriptor = open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  const bool written = descriptor >= 0 && WriteAll(descriptor, bytes.data(), bytes.size());
+  const int reason = errno;
+  if (descriptor >= 0 && close(descriptor) != 0 && written)
+  {
+    error = path + ": cannot write the file (" + std::strerror(errno) + ")";
+    return false;
+  }
+  if (!written)
+  {
+    error = path + ": cannot write the file (" + std::strerror(reason) + ")";
+  }
+  return written;
+}
+}
+
+bool ReplaceFile(const std::string& path, const std::string& bytes, std::string& error)
+{
+  struct stat information;
+  if (lstat(path.c_str(), &information) == 0 && !S_ISREG(information.st_mode))
+  {
+    return WriteThrough(path, bytes, error);
+  }
+  SafeOutputFile file(path);
+  return file.Open(error) && file.Write(bytes, error) && file.Close(error) &&
+    PublishOutputs({ &file }, true, error);
 }

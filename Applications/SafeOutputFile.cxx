@@ -98,27 +98,33 @@ bool SafeOutputFile::Open(std::string& error)
   return false;
 }
 
-bool SafeOutputFile::Write(const char* data, std::size_t size, std::string& error)
+bool WriteAll(int descriptor, const char* data, std::size_t size)
 {
   while (size > 0)
   {
-    const ssize_t written = write(this->Descriptor, data, size);
+    const ssize_t written = write(descriptor, data, size);
     if (written < 0 && errno == EINTR)
     {
       continue;
     }
     if (written <= 0)
     {
-      if (written == 0)
-      {
-        errno = EIO;
-      }
-      error = Problem(this->Final, "cannot write the file");
-      this->Discard();
+      errno = written == 0 ? EIO : errno;
       return false;
     }
     data += written;
     size -= static_cast<std::size_t>(written);
+  }
+  return true;
+}
+
+bool SafeOutputFile::Write(const char* data, std::size_t size, std::string& error)
+{
+  if (!WriteAll(this->Descriptor, data, size))
+  {
+    error = Problem(this->Final, "cannot write the file");
+    this->Discard();
+    return false;
   }
   return true;
 }

@@ -45,6 +45,9 @@ private:
 /// `path` followed by ".partial-" and 12 random letters or digits, in the same folder (a
 /// shorter name if the file name would grow past the file system's limit).
 std::string TemporaryName(const std::string& path);
+/// Writes all of `data` to `descriptor` (short writes continued, EINTR retried); false with
+/// errno set otherwise.
+bool WriteAll(int descriptor, const char* data, std::size_t size);
 /// Creates the file `path` for writing; fails (-1, errno set) if anything exists there,
 /// a symbolic link included.
 int CreateExclusive(const std::string& path);

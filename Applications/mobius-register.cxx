@@ -6,6 +6,7 @@
 #include "MemoryReuse.h"
 #include "OutputFiles.h"
 #include "RegistrationPipeline.h"
+#include "StandardOutput.h"
 #include "VTKMessages.h"
 
 #include "vtkCallbackCommand.h"
@@ -15,10 +16,8 @@
 #include "vtkSurfaceMeshReader.h"
 #include "vtkVersion.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -227,22 +226,6 @@ int RunOrbifold(const CommandLine& commandLine)
   return 0;
 }
 
-// Standard output flushed and without error: a summary lost to a full disk or a closed
-// pipe is a failure like any other.
-bool StandardOutputWritten()
-{
-  errno = 0;
-  std::cout.flush();
-  const bool flushed = std::fflush(stdout) == 0;
-  const bool written = flushed && std::cout.good() && !std::ferror(stdout);
-  if (!written)
-  {
-    Fail(std::string("standard output: cannot write (") +
-      (errno ? std::strerror(errno) : "write error") + ")");
-  }
-  return written;
-}
-
 int Run(int argc, char* argv[]);
 }
 
@@ -255,7 +238,8 @@ int main(int argc, char* argv[])
   try
   {
     const int status = Run(argc, argv);
-    return status == 0 && !StandardOutputWritten() ? 1 : status;
+    std::string error;
+    return status == 0 && !FlushStandardOutput(error) ? Fail(error) : status;
   }
   catch (const std::bad_alloc&)
   {

@@ -83,6 +83,20 @@ bool Finished(SafeOutputFile& file, const std::string& text)
   return file.Open(error) && file.Write(text, error) && file.Close(error);
 }
 
+// Runs `body` in a child process; its wait status.
+int InChild(const std::function<void()>& body)
+{
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    body();
+    _exit(0);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  return status;
+}
+
 void NamesAreFreshAndUnpredictable()
 {
   std::set<std::string> names;
@@ -141,20 +155,32 @@ void ReplacingPutsTheOldFilesBack()
   Check(Finished(mesh2, "new mesh") && Finished(csv2, "new csv"), "two temporaries written");
   Check(PublishOutputs({ &mesh2, &csv2 }, true, error), "replacing: " + error);
   Check(Read(At("b.vtp")) == "new mesh" && Read(At("b.csv")) == "new csv", "both replaced");
+  // The failed group's CSV, never moved, waits for its object; no second name is left.
+  Check(Temporaries() == 1, "replacing leaves no second name behind: " + std::to_string(Temporaries()));
+  // Only regular files are replaced: a link stays, and so does the file it points to.
+  Put(At("target"), "kept");
+  symlink(At("target").c_str(), At("h.vtp").c_str());
+  SafeOutputFile linked(At("h.vtp"));
+  Check(Finished(linked, "new"), "a temporary written");
+  Check(!PublishOutputs({ &linked }, true, error) && error.find("not a regular file") != std::string::npos,
+    "a link is not replaced: " + error);
+  Check(Read(At("target")) == "kept" && Exists(At("h.vtp")), "the link and its file stay");
 }
 
-// Runs `body` in a child process; its wait status.
-int InChild(const std::function<void()>& body)
+void ReplaceFileKeepsTheOldOneOnFailure()
 {
-  const pid_t child = fork();
-  if (child == 0)
-  {
-    body();
-    _exit(0);
-  }
-  int status = 0;
-  waitpid(child, &status, 0);
-  return status;
+  Put(At("i.csv"), "old");
+  std::string error;
+  Check(ReplaceFile(At("i.csv"), "new", error) && Read(At("i.csv")) == "new", "ReplaceFile: " + error);
+  const int status = InChild([]() {
+    signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{ 10, 10 };
+    setrlimit(RLIMIT_FSIZE, &limit);
+    std::string error;
+    _exit(ReplaceFile(At("i.csv"), std::string(100, 'x'), error) ? 3 : 0);
+  });
+  Check(WIFEXITED(status) && WEXITSTATUS(status) == 0, "ReplaceFile fails under a size limit");
+  Check(Read(At("i.csv")) == "new" && Temporaries() == 0, "a failed ReplaceFile leaves the old file");
 }
 
 void WriteErrorsAreReported()
@@ -241,6 +267,7 @@ int main(int argc, char* argv[])
   NothingIsReplacedThatAppeared();
   ReplacingPutsTheOldFilesBack();
   WriteErrorsAreReported();
+  ReplaceFileKeepsTheOldOneOnFailure();
   SignalsRemoveTemporaries();
   Check(Temporaries() == 0, "no temporary left at the end");
   std::printf("%d failed\n", Failures);
