@@ -20,6 +20,13 @@ bool Exists(const std::string& path)
   return stat(path.c_str(), &info) == 0;
 }
 
+// Anything at the name, a link to nowhere included.
+bool NameTaken(const std::string& path)
+{
+  struct stat info;
+  return lstat(path.c_str(), &info) == 0;
+}
+
 bool SameFile(const std::string& a, const std::string& b)
 {
   struct stat first, second;
@@ -65,7 +72,7 @@ bool OutputFiles::Plan(const std::string& output, const std::string& picture, bo
         return false;
       }
     }
-    if (Exists(path) && !force)
+    if (NameTaken(path) && !force)
     {
       error = path + ": exists already (use --force to overwrite)";
       return false;

@@ -7,6 +7,7 @@
 - the same limit with SIGXFSZ's default action, and SIGINT, SIGTERM, SIGHUP sent while the
   temporary files exist: the program dies by the signal and leaves nothing;
 - symbolic links planted at every temporary name the former scheme would use: never followed;
+  a link at OUT.csv is never replaced;
 - concurrent runs on one OUT without --force: exactly one wins, the others fail and leave
   the winner's files intact; a file the user creates at OUT.csv during a run stays;
 - a standard output that cannot be written (/dev/full): exit status 1.
@@ -158,6 +159,16 @@ check(all(os.path.islink(os.path.join(work, name)) for name in planted),
 for name in planted:
     if os.path.lexists(os.path.join(work, name)):
         os.remove(os.path.join(work, name))
+
+# A link at OUT.csv, even one to nowhere, is something there: kept without --force, and not
+# replaced with it either (only regular files are).
+os.symlink("nowhere", os.path.join(work, "linked.csv"))
+for options, words in (([], ["exists already"]), (["--force"], ["not a regular file"])):
+    arguments = [small, small, "-o", "linked", *FAST, *options]
+    code, _, err = run(arguments)
+    harness.check_one_line_error(arguments, code, err, ["linked.csv", *words], [])
+    check(os.readlink(os.path.join(work, "linked.csv")) == "nowhere" and not temporaries()
+          and not os.path.exists(os.path.join(work, "linked.vtp")), f"{options}: the link at OUT.csv")
 
 # --- Concurrent runs on one OUT without --force: exactly one wins. ---------------------
 targets = {scale: write_mesh(f"scaled{scale}.off", mesh_files.scaled(mesh_files.lumpy_sphere(3), scale))
