@@ -12,6 +12,7 @@
 #include "vtkPolyDataNormals.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <Eigen/Dense>
@@ -125,7 +126,7 @@ vtkSmartPointer<vtkPolyData> OnSurface(vtkPolyData* map)
 }
 
 bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence,
-  const std::string& pngPath, std::string& error, int width, int height)
+  std::string& png, std::string& error, int width, int height)
 {
   // Debian's VTK renders through GLX only, and aborts the process without an X server.
   const char* display = std::getenv("DISPLAY");
@@ -165,12 +166,14 @@ bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* corres
   capture->ReadFrontBufferOff();
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputConnection(capture->GetOutputPort());
-  writer->SetFileName(pngPath.c_str());
+  writer->WriteToMemoryOn();
   writer->Write();
-  if (writer->GetErrorCode() != 0)
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (writer->GetErrorCode() != 0 || !bytes || bytes->GetNumberOfValues() == 0)
   {
-    error = "cannot write the picture";
+    error = "cannot encode the picture";
     return false;
   }
+  png.assign(reinterpret_cast<const char*>(bytes->GetPointer(0)), bytes->GetNumberOfValues());
   return true;
 }

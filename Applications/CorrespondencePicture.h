@@ -8,12 +8,13 @@
 
 #include <string>
 
-/// Renders offscreen (GLX: needs an X display, e.g. under xvfb-run) and writes a PNG.
+/// Renders offscreen (GLX: needs an X display, e.g. under xvfb-run) into the bytes of a PNG
+/// file, `png`.
 /// `alignedSource`: the source map aligned by vtkSO3Register, with `SurfacePoints`;
 /// `correspondence`: the map (vtkDenseCorrespondence or vtkCorrespondenceRefinement output)
 /// with `MappedPoints`. Fails with a message instead of aborting when
 /// there is no display.
 bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence,
-  const std::string& pngPath, std::string& error, int width = 1200, int height = 600);
+  std::string& png, std::string& error, int width = 1200, int height = 600);
 
 #endif

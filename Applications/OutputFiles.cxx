@@ -1,6 +1,7 @@
 #include "OutputFiles.h"
 
 #include "CorrespondencePicture.h"
+#include "PublishOutputs.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -8,14 +9,8 @@
 #include "vtkPointData.h"
 #include "vtkXMLPolyDataWriter.h"
 
-#include <cerrno>
 #include <charconv>
-#include <cstdio>
-#include <cstring>
-#include <utility>
-#include <fstream>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace
 {
@@ -23,6 +18,13 @@ bool Exists(const std::string& path)
 {
   struct stat info;
   return stat(path.c_str(), &info) == 0;
+}
+
+// Anything at the name, a link to nowhere included.
+bool NameTaken(const std::string& path)
+{
+  struct stat info;
+  return lstat(path.c_str(), &info) == 0;
 }
 
 bool SameFile(const std::string& a, const std::string& b)
@@ -39,19 +41,6 @@ std::string Folder(const std::string& path)
 }
 }
 
-OutputFiles::~OutputFiles()
-{
-  for (const auto& path : this->Written)
-  {
-    std::remove(this->Temporary(path).c_str());
-  }
-}
-
-std::string OutputFiles::Temporary(const std::string& path) const
-{
-  return path + ".partial-" + std::to_string(getpid());
-}
-
 bool OutputFiles::Plan(const std::string& output, const std::string& picture, bool force,
   const std::vector<std::string>& inputs, std::string& error)
 {
@@ -63,6 +52,7 @@ bool OutputFiles::Plan(const std::string& output, const std::string& picture, bo
   this->MeshPath = stem + ".vtp";
   this->CsvPath = stem + ".csv";
   this->PicturePath = picture;
+  this->Force = force;
   for (const auto& path : { this->MeshPath, this->CsvPath, this->PicturePath })
   {
     if (path.empty())
@@ -82,7 +72,7 @@ bool OutputFiles::Plan(const std::string& output, const std::string& picture, bo
         return false;
       }
     }
-    if (Exists(path) && !force)
+    if (NameTaken(path) && !force)
     {
       error = path + ": exists already (use --force to overwrite)";
       return false;
@@ -101,20 +91,19 @@ bool OutputFiles::WriteMesh(vtkPolyData* correspondence, std::string& error)
   // file 3.7 MB instead of 2.9 MB.
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToLZ4();
-  writer->SetFileName(this->Temporary(this->MeshPath).c_str());
-  this->Written.push_back(this->MeshPath);
-  if (writer->Write() != 1)
+  // Written to memory, and the bytes by WriteFile: VTK's own file writing misses some
+  // errors (a full disk) and crashes on others.
+  writer->WriteToOutputStringOn();
+  if (writer->Write() != 1 || writer->GetErrorCode() != 0)
   {
-    error = this->MeshPath + ": cannot write the file";
+    error = this->MeshPath + ": cannot write the file (VTK's writer failed)";
     return false;
   }
-  return true;
+  return this->WriteFile(this->MeshPath, writer->GetOutputString(), error);
 }
 
 bool OutputFiles::WriteCsv(vtkPolyData* correspondence, std::string& error)
 {
-  std::ofstream csv(this->Temporary(this->CsvPath));
-  this->Written.push_back(this->CsvPath);
   vtkPointData* data = correspondence->GetPointData();
   vtkDataArray* cells = data->GetArray("TargetCellId");
   vtkDataArray* weights = data->GetArray("TargetBarycentric");
@@ -123,48 +112,59 @@ bool OutputFiles::WriteCsv(vtkPolyData* correspondence, std::string& error)
   // which repairs (and the readers) may have renumbered.
   vtkDataArray* sourceIds = data->GetArray("InputPointId");
   vtkDataArray* targetIds = data->GetArray("TargetInputPointIds");
-  if (!csv || !cells || !weights || !mapped || !sourceIds || !targetIds)
+  if (!cells || !weights || !mapped || !sourceIds || !targetIds)
   {
-    error = this->CsvPath + ": cannot write the file";
+    error = this->CsvPath + ": the map lacks the arrays of the CSV";
     return false;
   }
-  csv << "source_vertex,target_triangle,target_vertex_0,target_vertex_1,target_vertex_2,"
-         "barycentric_0,barycentric_1,barycentric_2,mapped_x,mapped_y,mapped_z\n";
+  auto csv = std::make_unique<SafeOutputFile>(this->CsvPath);
+  if (!csv->Open(error))
+  {
+    return false;
+  }
+  std::string text = "source_vertex,target_triangle,target_vertex_0,target_vertex_1,target_vertex_2,"
+                     "barycentric_0,barycentric_1,barycentric_2,mapped_x,mapped_y,mapped_z\n";
   // std::to_chars writes the shortest text that reads back to the same double (an ostream
   // at precision 17 took 4x longer for 17 digits that say no more).
-  std::string line;
   char number[32];
   auto append = [&](auto value) {
     const auto end = std::to_chars(number, number + sizeof(number), value).ptr;
-    line.append(number, end);
+    text.append(number, end);
   };
   for (vtkIdType i = 0; i < correspondence->GetNumberOfPoints(); ++i)
   {
-    line.clear();
     append(static_cast<vtkIdType>(sourceIds->GetComponent(i, 0)));
-    line += ',';
+    text += ',';
     append(static_cast<vtkIdType>(cells->GetComponent(i, 0)));
     for (int k = 0; k < 3; ++k)
     {
-      line += ',';
+      text += ',';
       append(static_cast<vtkIdType>(targetIds->GetComponent(i, k)));
     }
     for (vtkDataArray* array : { weights, mapped })
     {
       for (int k = 0; k < 3; ++k)
       {
-        line += ',';
+        text += ',';
         append(array->GetComponent(i, k));
       }
     }
-    line += '\n';
-    csv << line;
+    text += '\n';
+    // Written a megabyte at a time: the whole text of a large map is a lot of memory.
+    if (text.size() > (1 << 20))
+    {
+      if (!csv->Write(text, error))
+      {
+        return false;
+      }
+      text.clear();
+    }
   }
-  if (!csv)
+  if (!csv->Write(text, error) || !csv->Close(error))
   {
-    error = this->CsvPath + ": cannot write the file";
     return false;
   }
+  this->Written.push_back(std::move(csv));
   return true;
 }
 
@@ -175,59 +175,34 @@ bool OutputFiles::WritePicture(
   {
     return true;
   }
-  this->Written.push_back(this->PicturePath);
-  if (!RenderCorrespondencePicture(
-        alignedSource, correspondence, this->Temporary(this->PicturePath), error))
+  std::string png;
+  if (!RenderCorrespondencePicture(alignedSource, correspondence, png, error))
   {
     error = this->PicturePath + ": " + error;
     return false;
   }
+  return this->WriteFile(this->PicturePath, png, error);
+}
+
+bool OutputFiles::WriteFile(const std::string& path, const std::string& bytes, std::string& error)
+{
+  auto file = std::make_unique<SafeOutputFile>(path);
+  if (!file->Open(error) || !file->Write(bytes, error) || !file->Close(error))
+  {
+    return false;
+  }
+  this->Written.push_back(std::move(file));
   return true;
 }
 
 bool OutputFiles::Commit(std::string& error)
 {
-  // All or nothing: a file being replaced (--force) is moved aside first, and if any rename
-  // fails, the files already moved into place are taken back and the old ones restored, so
-  // OUT.vtp never stays behind without its OUT.csv.
-  std::vector<std::pair<std::string, std::string>> asides; // final path, where the old file is
-  std::vector<std::string> placed;
-  auto undo = [&]() {
-    for (const auto& path : placed)
-    {
-      std::remove(path.c_str());
-    }
-    for (const auto& aside : asides)
-    {
-      std::rename(aside.second.c_str(), aside.first.c_str());
-    }
-  };
-  for (const auto& path : this->Written)
+  std::vector<SafeOutputFile*> files;
+  for (const auto& file : this->Written)
   {
-    struct stat information;
-    if (stat(path.c_str(), &information) == 0 && S_ISREG(information.st_mode))
-    {
-      const std::string aside = path + ".previous-" + std::to_string(getpid());
-      if (std::rename(path.c_str(), aside.c_str()) != 0)
-      {
-        error = path + ": cannot replace the existing file (" + std::strerror(errno) + ")";
-        undo();
-        return false;
-      }
-      asides.emplace_back(path, aside);
-    }
-    if (std::rename(this->Temporary(path).c_str(), path.c_str()) != 0)
-    {
-      error = path + ": cannot move the finished file into place (" + std::strerror(errno) + ")";
-      undo();
-      return false;
-    }
-    placed.push_back(path);
+    files.push_back(file.get());
   }
-  for (const auto& aside : asides)
-  {
-    std::remove(aside.second.c_str());
-  }
-  this->Written.clear();
-  return true;
+  const bool published = PublishOutputs(files, this->Force, error);
+  this->Written.clear(); // what was not published is removed
+  return published;
 }

@@ -1,19 +1,22 @@
-// The files mobius-register writes. Everything is written to temporary files first and
-// renamed into place only when the whole job has succeeded, so a failure leaves no partial
-// output behind; existing files are never replaced without --force.
+// The files mobius-register writes. Everything is written to temporary files first
+// (SafeOutputFile) and moved into place only when the whole job has succeeded
+// (PublishOutputs), so a failure, a full disk or a signal leaves no partial output behind;
+// existing files are never replaced without --force, not even those that appear while the
+// program runs.
 #ifndef OutputFiles_h
 #define OutputFiles_h
 
+#include "SafeOutputFile.h"
+
 #include "vtkPolyData.h"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 class OutputFiles
 {
 public:
-  ~OutputFiles();
-
   /// Decides the paths from -o (a prefix, or a .vtp path) and --png; fails if a file
   /// exists and `force` is off, if the folder does not exist, or if an output would
   /// replace one of `inputs` (never allowed, even with `force`).
@@ -27,17 +30,20 @@ public:
   /// the mapped position. Vertices are numbered as in the mesh files (InputPointId,
   /// TargetInputPointIds); -1 is a vertex --fill-holes created.
   bool WriteCsv(vtkPolyData* correspondence, std::string& error);
-  /// The picture, rendered by RenderCorrespondencePicture into a temporary file.
+  /// The picture, rendered in memory by RenderCorrespondencePicture.
   bool WritePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence, std::string& error);
 
-  /// Moves the temporary files into place.
+  /// Moves the finished files into place, all of them or none.
   bool Commit(std::string& error);
 
   std::string MeshPath, CsvPath, PicturePath;
 
 private:
-  std::string Temporary(const std::string& path) const;
-  std::vector<std::string> Written; // final paths whose temporary file exists
+  /// A finished temporary file holding `bytes`, ready for Commit.
+  bool WriteFile(const std::string& path, const std::string& bytes, std::string& error);
+
+  bool Force = false;
+  std::vector<std::unique_ptr<SafeOutputFile>> Written;
 };
 
 #endif

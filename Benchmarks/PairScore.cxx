@@ -2,13 +2,15 @@
 
 #include "ScoreInput.h"
 
+#include "PublishOutputs.h"
+
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace
 {
@@ -194,7 +196,7 @@ bool ScorePair(const DatasetShape& x, const DatasetShape& y, std::vector<mobius:
 bool WriteSampleErrors(const std::string& path, const DatasetShape& x, const DatasetShape& y,
   const SampleErrors& samples, std::string& error)
 {
-  std::ofstream csv(path);
+  std::ostringstream csv;
   csv << "sample,source_vertex,mapped_vertex,true_vertex,error,mirror_vertex,mirror_error\n";
   csv.precision(8);
   for (size_t k = 0; k < samples.Mapped.size(); ++k)
@@ -211,12 +213,7 @@ bool WriteSampleErrors(const std::string& path, const DatasetShape& x, const Dat
     }
     csv << '\n';
   }
-  if (!csv)
-  {
-    error = path + ": cannot write the file";
-    return false;
-  }
-  return true;
+  return ReplaceFile(path, csv.str(), error);
 }
 
 void PrintPairRow(const PairScore& s)
@@ -235,7 +232,7 @@ void PrintPairRow(const PairScore& s)
 
 bool WritePairCsv(const std::string& path, const std::vector<PairScore>& scores, std::string& error)
 {
-  std::ofstream csv(path);
+  std::ostringstream csv;
   csv << "source,target,error,mirror_error,mirrored,euclidean_error,seconds,score_seconds,"
          "kept_candidate,candidates,orientation_agreement,unmapped_samples,geodesics,failure\n";
   for (const PairScore& s : scores)
@@ -254,12 +251,7 @@ bool WritePairCsv(const std::string& path, const std::vector<PairScore>& scores,
         << (s.Failure.empty() ? std::to_string(s.Unmapped) : "") << ','
         << (s.Failure.empty() ? PathKind(s.Shortened) : "") << ",\"" << failure << "\"\n";
   }
-  if (!csv)
-  {
-    error = path + ": cannot write the file";
-    return false;
-  }
-  return true;
+  return ReplaceFile(path, csv.str(), error);
 }
 
 void PrintSummary(const std::vector<PairScore>& scores, bool fromCsv)

@@ -9,6 +9,9 @@
 #include "DatasetScore.h"
 #include "ScoreInput.h"
 
+#include "PublishOutputs.h"
+#include "StandardOutput.h"
+
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
@@ -29,6 +32,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -206,12 +210,9 @@ void PrintRow(const char* name, const mobius::CorrespondenceErrorSummary& summar
 }
 }
 
-int main(int argc, char* argv[])
+// One map scored against its truth.
+int ScoreMap(int argc, char* argv[])
 {
-  if (IsDatasetScore(argc, argv))
-  {
-    return RunDatasetScore(argc, argv);
-  }
   std::vector<std::string> positional;
   std::string truthPath, errorsPath;
   bool json = false;
@@ -362,7 +363,7 @@ int main(int argc, char* argv[])
 
   if (!errorsPath.empty())
   {
-    std::ofstream out(errorsPath);
+    std::ostringstream out;
     out << "source_vertex,euclidean,geodesic\n";
     out.precision(10);
     for (mobius::Index i = 0; i < sourceVertices; ++i)
@@ -374,9 +375,9 @@ int main(int argc, char* argv[])
       }
       out << '\n';
     }
-    if (!out)
+    if (!ReplaceFile(errorsPath, out.str(), error))
     {
-      return Fail(errorsPath + ": cannot write the file");
+      return Fail(error);
     }
   }
 
@@ -417,4 +418,11 @@ int main(int argc, char* argv[])
             << (truthPath.empty() ? "identity" : truthPath) << "; " << Number(seconds, false)
             << " s\n";
   return 0;
+}
+
+int main(int argc, char* argv[])
+{
+  const int status = IsDatasetScore(argc, argv) ? RunDatasetScore(argc, argv) : ScoreMap(argc, argv);
+  std::string error;
+  return status == 0 && !FlushStandardOutput(error) ? Fail(error) : status;
 }

@@ -156,6 +156,16 @@ with open(os.path.join(work, "errors.csv")) as f:
     error_rows = f.read().splitlines()
 check(len(error_rows) == n + 1 and error_rows[0] == "source_vertex,euclidean,geodesic"
       and sum(1 for r in error_rows[1:] if r.split(",")[2]) == 100, "--errors file")
+# A file that cannot be written fully, and a standard output that cannot be written: exit
+# status 1 and one line, never a silently short file (the final flush included).
+code, _, err = run(hand, hand, "hand.csv", "--max-geodesic", "100", "--errors", "/dev/full")
+check(code == 1 and len(err.strip().splitlines()) == 1 and "/dev/full: cannot write" in err,
+      f"--errors /dev/full: {code} {err!r}")
+with open("/dev/full", "w") as full:
+    code = subprocess.run([score, hand, hand, "hand.csv", "--max-geodesic", "100"], cwd=work, stdout=full,
+                          stderr=subprocess.PIPE, text=True)
+    check(code.returncode == 1 and "standard output: cannot write" in code.stderr,
+          f"standard output /dev/full: {code.returncode} {code.stderr!r}")
 
 # Corrupted maps. Every 10th vertex sent where vertex (i + n/2) mod n goes: about 10% of the
 # vertices leave the 0.025 band, and the mean grows accordingly.

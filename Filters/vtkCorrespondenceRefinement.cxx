@@ -283,6 +283,11 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       // A stored basis is built with the lumped mass; a blended mass needs its own basis.
       stored[k] = found == mobius::vtk::StoredBasis::Found && this->ConsistentMassShare == 0.0;
     }
+    // After the stored bases were matched: their fingerprints are of the surfaces as stored.
+    for (MapInput& map : maps)
+    {
+      mobius::vtk::CenterSurface(map.Surface);
+    }
     // The two surfaces are independent (each eigensolve runs on one core): side by side
     // when there are two threads.
     mobius::ParallelFor(2, threads, [&](int k, int) {

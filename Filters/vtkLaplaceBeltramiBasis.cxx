@@ -63,6 +63,8 @@ int vtkLaplaceBeltramiBasis::ComputeOutput(
     return 0;
   }
   mobius::vtk::NormalizeSurfaceScale(surface);
+  const std::string fingerprint = mobius::vtk::SurfaceFingerprint(surface, triangles);
+  mobius::vtk::CenterSurface(surface);
   this->UpdateProgress(0.05);
 
   mobius::LaplaceBeltramiBasis basis;
@@ -72,7 +74,7 @@ int vtkLaplaceBeltramiBasis::ComputeOutput(
     return 0;
   }
   output->ShallowCopy(input);
-  mobius::vtk::AddBasisArrays(output, basis, mobius::vtk::SurfaceFingerprint(surface, triangles));
+  mobius::vtk::AddBasisArrays(output, basis, fingerprint);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -56,6 +56,15 @@ void NormalizeSurfaceScale(Points& surface)
   }
 }
 
+void CenterSurface(Points& surface)
+{
+  if (surface.rows() > 0)
+  {
+    surface.rowwise() -= surface.colwise().mean();
+    NormalizeSurfaceScale(surface);
+  }
+}
+
 std::string SurfaceFingerprint(const Points& surface, const Triangles& triangles)
 {
   Fnv1a hash;

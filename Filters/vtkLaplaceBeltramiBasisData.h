@@ -35,6 +35,12 @@ constexpr const char* LaplaceBeltramiBasisMeshArrayName = "LaplaceBeltramiBasisM
 /// coordinates of 1e-100 or 1e100 would underflow or overflow. Exact (a power of two).
 void NormalizeSurfaceScale(Points& surface);
 
+/// Moves the surface to its mean and normalizes its scale again, before its basis and the
+/// refinement's geometry are computed: a translation changes neither, but coordinates far
+/// from the origin cost their precision (a unit-size mesh at 1e12 was refined 0.008 off,
+/// its coordinates' rounding being 0.0001). Fingerprints are of the surface before.
+void CenterSurface(Points& surface);
+
 /// A 64-bit hash (hexadecimal) of the point count, coordinates and triangles, and of the
 /// kind of basis (bump its version when ComputeLaplaceBeltramiBasis changes).
 std::string SurfaceFingerprint(const Points& surface, const Triangles& triangles);

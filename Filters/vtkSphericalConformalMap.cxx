@@ -110,18 +110,6 @@ mobius::MeshProvenance RemoveUnusedPoints(mobius::Points& points, mobius::Triang
   return provenance;
 }
 
-double SignedVolume(const mobius::Points& points, const mobius::Triangles& triangles)
-{
-  double volume = 0;
-  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::Vector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
-                          c = points.row(triangles(t, 2));
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  return volume;
-}
-
 bool NeedsTriangulation(vtkPolyData* input)
 {
   if (input->GetNumberOfStrips() > 0 || input->GetNumberOfVerts() > 0 ||
@@ -322,7 +310,7 @@ int vtkSphericalConformalMap::ComputeOutput(
   }
   // The flow keeps the orientation of the triangles; make them face outward so the map
   // comes out orientation-preserving and outward-facing on the sphere.
-  const bool reversed = SignedVolume(points, triangles) < 0;
+  const bool reversed = mobius::EnclosedVolume(points, triangles) < 0;
   if (reversed)
   {
     triangles.col(1).swap(triangles.col(2));

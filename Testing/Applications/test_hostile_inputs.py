@@ -367,6 +367,17 @@ for factor in (1e-150, 1e-12, 1e12, 1e150):
     expect_result(f"scaled {factor:g}", off(f"scaled{factor:g}", small), small[0])
     expect_result(f"scaled {factor:g}, refined", off(f"scaled{factor:g}", small), small[0],
                   ["--refine", "spectral", "--basis-size", "20"])
+# Nor position: a target 1e3 to 1e12 from the origin, the source at it, maps vertex i onto
+# vertex i, never onto its mirror image (the inside-out test of vtkSphericalConformalMap
+# summed signed volumes in absolute coordinates: at 1e6 the map came back mirrored).
+for offset in (1e3, 1e6, 1e9, 1e12):
+    far = shifted(lumpy, 0, (offset, 0.5 * offset, -offset))
+    for label, options in (("", FAST), (", refined", [*FAST, "--refine", "spectral", "--basis-size", "20"])):
+        output = f"far{offset:g}{label.strip(', ')}"
+        arguments = [off("lumpy", lumpy), off(f"far{offset:g}", far), "-o", output, *options, "--quiet"]
+        code, _, err = harness.run(*arguments, timeout=timeout)
+        if check(code == 0, f"{arguments}: exit code {code}: {err!r}"):
+            check_result(f"target at {offset:g}{label}", output, far[0], self_map=True)
 for factor in (1e-200, 1e200):
     expect_error(f"scaled {factor:g}", off(f"scaled{factor:g}", mesh_files.scaled(lumpy, factor)),
                  ["areas", "beyond what double precision represents", "rescale"])

@@ -241,20 +241,21 @@ expect_failure(["open.off", hand, "-o", "hint"], ["open.off", "--fill-holes"], [
 code, _, err = run("open.off", hand, "-o", "hint")
 check("FillHoles" not in err, f"hint names a VTK property: {err!r}")
 
-# A failed rename leaves nothing behind: OUT.csv is a folder, so moving the CSV into place
-# fails after OUT.vtp could have been moved; OUT.vtp must not stay.
-os.makedirs(os.path.join(work, "renamed.csv", "inside"))
+# A failed rename leaves nothing behind: OUT.vtp is a folder, so moving the VTP into place
+# fails after OUT.csv (written and moved first) was; OUT.csv must not stay.
+os.makedirs(os.path.join(work, "renamed.vtp", "inside"))
 code, _, err = run(hand, hand, "-o", "renamed", "--resolution", "32", "--refine", "none", "--force")
-check(code == 1 and "renamed.csv" in err and len(err.strip().splitlines()) == 1,
+check(code == 1 and "renamed.vtp" in err and len(err.strip().splitlines()) == 1,
       f"failed rename: {code} {err!r}")
-check(not os.path.exists(os.path.join(work, "renamed.vtp")), "failed rename left renamed.vtp behind")
+check(not os.path.exists(os.path.join(work, "renamed.csv")), "failed rename left renamed.csv behind")
 check(not [f for f in os.listdir(work) if ".partial-" in f or ".previous-" in f], "temporary files left")
-# ...and an existing OUT.vtp replaced with --force comes back when the CSV cannot follow.
-with open(os.path.join(work, "renamed.vtp"), "w") as f:
+# ...and an existing OUT.csv replaced with --force comes back when the VTP cannot follow.
+with open(os.path.join(work, "renamed.csv"), "w") as f:
     f.write("old")
 code, _, err = run(hand, hand, "-o", "renamed", "--resolution", "32", "--refine", "none", "--force")
-with open(os.path.join(work, "renamed.vtp")) as f:
-    check(code == 1 and f.read() == "old", "failed rename restores the replaced OUT.vtp")
+with open(os.path.join(work, "renamed.csv")) as f:
+    check(code == 1 and f.read() == "old", "failed rename restores the replaced OUT.csv")
+check(not [f for f in os.listdir(work) if ".partial-" in f], "temporary files left after the restore")
 
 
 # Degenerate maps fail (status 1, one line with the reason) unless --allow-poor-maps.

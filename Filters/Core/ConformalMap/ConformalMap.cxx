@@ -2,6 +2,7 @@
 
 #include "CotangentLaplacian.h"
 #include "LinearSphericalMap.h"
+#include "MapDistortion.h"
 #include "MeshTopology.h"
 #include "MobiusCentering.h"
 #include "SparseCholesky.h"
@@ -151,19 +152,6 @@ Eigen::Matrix3d BestRotation(const Points& from, const Points& to, const Vector&
   Eigen::Matrix3d sign = Eigen::Matrix3d::Identity();
   sign(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
   return svd.matrixV() * sign * svd.matrixU().transpose();
-}
-
-// Signed volume enclosed by the triangles (positive when they face outward).
-double EnclosedVolume(const Points& x, const Triangles& triangles)
-{
-  double volume = 0.0;
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::Vector3d a = x.row(triangles(t, 0)), b = x.row(triangles(t, 1)),
-                          c = x.row(triangles(t, 2));
-    volume += SignedVolume(a, b, c);
-  }
-  return volume;
 }
 
 ConformalMapResult Fail(ConformalMapResult& result, const std::string& message)

@@ -67,6 +67,20 @@ double SignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Ei
   return a.dot((b - a).cross(c - a));
 }
 
+double EnclosedVolume(const Points& points, const Triangles& triangles)
+{
+  const Eigen::Vector3d center = points.colwise().mean().transpose();
+  double volume = 0.0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::Vector3d a = points.row(triangles(t, 0)).transpose() - center;
+    const Eigen::Vector3d b = points.row(triangles(t, 1)).transpose() - center;
+    const Eigen::Vector3d c = points.row(triangles(t, 2)).transpose() - center;
+    volume += SignedVolume(a, b, c);
+  }
+  return volume;
+}
+
 double TriangleQuasiConformalDistortion(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
   const Eigen::Vector3d& p2, const Eigen::Vector3d& q0, const Eigen::Vector3d& q1,
   const Eigen::Vector3d& q2)

@@ -54,6 +54,12 @@ struct MapDistortion
 /// reports correct triangles as flipped.
 double SignedVolume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
+/// Six times the signed volume the triangles enclose (positive when they face outward),
+/// summed relative to the points' mean: the same for a closed surface in exact arithmetic,
+/// but a mesh far from the origin (a unit-size mesh at 1e6) otherwise loses its volume to
+/// cancellation between terms a million times larger, and may be taken for inside out.
+double EnclosedVolume(const Points& points, const Triangles& triangles);
+
 /// Distortion of the map original[i] -> mapped[i] over the triangles. Original triangles
 /// with no area are skipped (they have no defined distortion). `mapped` is taken to be
 /// centered at the origin for the flip count (true of a spherical map).
