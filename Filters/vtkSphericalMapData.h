@@ -3,7 +3,7 @@
  * @brief Conversions between vtkPolyData spherical maps and the VTK-free core, and the
  * checks every filter applies to them (private to the module).
  *
- * A spherical map (see DESIGN.md, "Pipeline and data contract") is a vtkPolyData of
+ * A spherical map (see docs/architecture.md, "Pipeline and data contract") is a vtkPolyData of
  * triangles whose points lie on the unit sphere, with point data `SurfacePoints` (the
  * vertex on the original surface) and cell data `SurfaceArea` (the triangle's original
  * area). Each function returns an empty string on success, else a message naming the

@@ -4,7 +4,7 @@
 # /dev/shm and /dev/pts bind-mounted), a fresh clone of the committed HEAD in it, and there,
 # as root without any environment variable, the README's commands:
 #   (default)      ./scripts/demo.sh, then ./scripts/test.sh (ParaView 5.11 and its VTK)
-#   --plain-vtk    the README's "Without ParaView" commands, verbatim (Debian's VTK 9.1, no
+#   --plain-vtk    docs/testing.md's "Without ParaView" commands, verbatim (Debian's VTK 9.1, no
 #                  ParaView); CMAKE_<LANG>_COMPILER_LAUNCHER=ccache is added so that a second
 #                  run builds from the compiler cache
 # It prints each command's result (status, time, the ctest summary and failed tests), and
@@ -84,18 +84,18 @@ if [ "$variant" = paraview ]; then
     done
   step "./scripts/test.sh" test.log ./scripts/test.sh
 else
-  # The README's block of commands after "**Without ParaView.**".
+  # docs/testing.md's block of commands after "**Without ParaView.**".
   commands="$(awk '/^\*\*Without ParaView\.\*\*/ { section = 1 }
                    section && /^```shell/ { inside = 1; next }
                    inside && /^```/ { exit }
-                   inside { print }' "$repo/README.md")"
+                   inside { print }' "$repo/docs/testing.md")"
   if [ -z "$commands" ]; then
-    echo "check-fresh-machine: no commands under **Without ParaView.** in README.md"; exit 1
+    echo "check-fresh-machine: no commands under **Without ParaView.** in docs/testing.md"; exit 1
   fi
   printf '%s\n' "$commands" > "$logs/commands.sh"
   chroot_run "$root" apt-get install -y -q --no-install-recommends ccache \
     > "$logs/ccache-install.log" 2>&1 || { tail -20 "$logs/ccache-install.log"; exit 1; }
-  step "README, Without ParaView (ccache as compiler launcher)" plain-vtk.log \
+  step "docs/testing.md, Without ParaView (ccache as compiler launcher)" plain-vtk.log \
     "export CMAKE_CXX_COMPILER_LAUNCHER=ccache CMAKE_C_COMPILER_LAUNCHER=ccache; set -e; $commands"
 fi
 

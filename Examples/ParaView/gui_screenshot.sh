@@ -1,5 +1,5 @@
 #!/bin/bash
-# A screenshot of the real ParaView GUI after the macro, for the README:
+# A screenshot of the real ParaView GUI after the macro, for the README and docs/paraview.md:
 #   Examples/ParaView/gui_screenshot.sh BUILD SOURCE_MESH TARGET_MESH OUTPUT.png
 # Starts its own Xvfb (display :77 unless MOBIUS_GUI_DISPLAY is set) and a ParaView with a
 # private settings folder (a HOME of its own: no welcome dialog, nothing written to the user's settings), runs

@@ -1,5 +1,5 @@
 """Runs symmetry_distances.py on two small CC0 meshes and checks what it wrote, so that the
-README's Figure 8 and 9 script keeps working.
+Figure 8 and 9 script of docs/symmetry.md keeps working.
 
 Usage: python3 test_symmetry_distances.py MESH_DIR OUTPUT_DIR   (the package on PYTHONPATH)
 """

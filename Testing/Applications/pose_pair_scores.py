@@ -21,7 +21,7 @@ import time
 import numpy as np
 
 # A map is right when its geodesic mean error against the direct truth is at most this (in
-# sqrt(target area)); README Accuracy: the refined maps of bent copies score 0.004-0.02, those
+# sqrt(target area)); docs/accuracy.md: the refined maps of bent copies score 0.004-0.02, those
 # of FAUST_r pose pairs that work about 0.036.
 RIGHT = 0.05
 # Geodesic errors are computed for at most this many source vertices (an even subsample).

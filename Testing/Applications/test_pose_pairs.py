@@ -13,7 +13,7 @@ the crouch is not.
 
 Per pair, with the geodesic error over sqrt(target area) (mobius-score):
   - mean against the direct truth at most pose_pair_scores.RIGHT (0.05): refined maps of bent
-    copies score 0.004-0.02 and FAUST_r pose pairs that work about 0.036 (README Accuracy);
+    copies score 0.004-0.02 and FAUST_r pose pairs that work about 0.036 (docs/accuracy.md);
     right maps of the pose pairs this generator makes score 0.004-0.04;
   - at least 90% of the source vertices within 0.1;
   - mean against the direct truth at most half the mean against the mirror truth: a right

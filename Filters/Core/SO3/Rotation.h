@@ -1,6 +1,6 @@
 // Rotations of R^3 and of spherical functions given by their harmonic coefficients.
 //
-// Conventions (DESIGN.md; checked in TestSO3Correlation by applying matrices to points):
+// Conventions (docs/architecture.md; checked in TestSO3Correlation by applying matrices to points):
 // a rotation acts on column vectors, x' = R x; ZYZ Euler angles mean
 // R = Rz(α) Ry(β) Rz(γ) with Rz, Ry the right-handed rotations about +z, +y. Rotating a
 // function by R means f ↦ f∘R⁻¹, so the rotated function at R x equals f at x. A matrix with

@@ -1,6 +1,6 @@
 // Complex spherical harmonics and a fast transform on the cell-centered equirectangular grid.
 //
-// Conventions (shared with the SO(3) correlation; see DESIGN.md):
+// Conventions (shared with the SO(3) correlation; see docs/architecture.md, "Conventions"):
 // - z is the polar axis, theta in [0, pi] from +z, phi = atan2(y, x) in [0, 2 pi).
 // - The grid has N = 2B rows and columns for bandwidth B. Cell (j, i) spans
 //   theta in [pi j/N, pi (j+1)/N], phi in [2 pi i/N, 2 pi (i+1)/N] and holds the sample at its
