@@ -58,6 +58,7 @@ struct Element
   std::string Name;
   long long Count = 0;
   std::vector<Property> Properties;
+  std::string HeaderLines; // the element's line and its property lines, as in the file
 };
 
 enum class Encoding
@@ -220,6 +221,7 @@ std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element
       {
         return malformed.str();
       }
+      element.HeaderLines = line + '\n';
       elements.push_back(element);
     }
     else if (keyword == "property")
@@ -248,6 +250,7 @@ std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element
         return malformed.str();
       }
       elements.back().Properties.push_back(property);
+      elements.back().HeaderLines += line + '\n';
     }
     else if (!keyword.empty() && keyword != "comment" && keyword != "obj_info")
     {
@@ -262,8 +265,9 @@ namespace
 {
 // What VTK 9.2's PLY reader needs of the header, or it crashes: a vertex element with
 // scalar x, y and z (without them it reports "Cannot read geometry", closes the file and
-// then reads it); a face element, if any, after the vertices and with its vertex_indices (or
-// vertex_index) list.
+// then reads it); a face element, if any, with its vertex_indices (or vertex_index) list.
+// (The order of the elements it needs too, vertices then faces and nothing else, is given
+// to it by ReadablePLYText.)
 std::string CheckPLYLayout(const std::vector<Element>& elements)
 {
   const auto find = [&elements](const std::string& name) {
@@ -289,11 +293,6 @@ std::string CheckPLYLayout(const std::vector<Element>& elements)
   const auto face = find("face");
   if (face != elements.end())
   {
-    if (face < vertex)
-    {
-      return "the PLY face element comes before the vertex element, which VTK's PLY reader "
-             "cannot read; list the vertices first";
-    }
     if (!hasProperty(*face, "vertex_indices", true) && !hasProperty(*face, "vertex_index", true))
     {
       return "the PLY face element has no list property 'vertex_indices'";
@@ -357,8 +356,7 @@ std::string CheckPLYFile(const std::string& fileName)
       return "the face element has no list property 'vertex_indices'";
     }
   }
-  // CheckPLYLayout puts the vertices before the faces; the largest index is checked again at
-  // the end all the same.
+  // The faces may come before the vertices: the largest index is checked again at the end.
   long long largestIndex = -1, largestIndexFace = -1;
   ValueReader reader(in, encoding);
   for (const auto& element : elements)
@@ -412,20 +410,16 @@ std::string CheckPLYFile(const std::string& fileName)
           }
           if (isFaceIndices)
           {
-            if (!property.ValueType.IsInteger || integer < 0 ||
+            if (!property.ValueType.IsInteger)
+            {
+              return "the face element stores its vertex indices as floating-point numbers; "
+                     "PLY vertex indices must be of an integer type (int, uint, ...)";
+            }
+            if (integer < 0 ||
               (numberOfVertices >= 0 && integer >= numberOfVertices))
             {
               std::ostringstream message;
-              message << "face " << item << " refers to vertex ";
-              if (property.ValueType.IsInteger)
-              {
-                message << integer;
-              }
-              else
-              {
-                message << real;
-              }
-              message << ", but the file has "
+              message << "face " << item << " refers to vertex " << integer << ", but the file has "
                       << std::max(0LL, numberOfVertices) << " vertices (numbered from 0)";
               return message.str();
             }
@@ -450,19 +444,114 @@ std::string CheckPLYFile(const std::string& fileName)
   return {};
 }
 
-bool PLYNeedsFinalLineBreak(const std::string& fileName)
+namespace
+{
+// Reads past the `count` items of an element (the file checked by CheckPLYFile).
+bool SkipItems(ValueReader& reader, const Element& element)
+{
+  for (long long item = 0; item < element.Count; ++item)
+  {
+    if (!reader.BeginItem())
+    {
+      return false;
+    }
+    for (const auto& property : element.Properties)
+    {
+      double real = 0;
+      long long count = 1;
+      if (property.IsList && !reader.Read(property.CountType, real, count))
+      {
+        return false;
+      }
+      for (long long k = 0; k < count; ++k)
+      {
+        long long integer = 0;
+        if (!reader.Read(property.ValueType, real, integer))
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+}
+
+std::string ReadablePLYText(const std::string& fileName)
 {
   std::ifstream in(fileName, std::ios::binary);
   Encoding encoding = Encoding::Ascii;
   std::vector<Element> elements;
-  if (!ReadHeader(in, encoding, elements).empty() || encoding != Encoding::Ascii)
+  if (!ReadHeader(in, encoding, elements).empty())
   {
-    return false;
+    return {};
   }
-  in.clear();
-  in.seekg(-1, std::ios::end);
+  const auto named = [&elements](const char* name) {
+    return std::find_if(elements.begin(), elements.end(),
+      [name](const Element& element) { return element.Name == name; });
+  };
+  const auto vertex = named("vertex"), face = named("face");
+  const bool onlyVerticesThenFaces = vertex == elements.begin() &&
+    (elements.size() == 1 || (elements.size() == 2 && face == elements.begin() + 1));
+  const std::streamoff dataStart = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streamoff fileEnd = in.tellg();
+  in.seekg(dataStart);
   char last = '\n';
-  return in.get(last) && last != '\n';
+  if (fileEnd > dataStart)
+  {
+    in.seekg(-1, std::ios::end);
+    in.get(last);
+    in.seekg(dataStart);
+  }
+  const bool lineBreakMissing = encoding == Encoding::Ascii && last != '\n';
+  if (onlyVerticesThenFaces && !lineBreakMissing)
+  {
+    return {};
+  }
+  // Where each element's data lies (its items are contiguous, in header order).
+  std::vector<std::pair<std::streamoff, std::streamoff>> spans;
+  ValueReader reader(in, encoding);
+  for (const auto& element : elements)
+  {
+    const std::streamoff begin = in.tellg();
+    if (!SkipItems(reader, element))
+    {
+      return {};
+    }
+    const std::streamoff end = in.eof() ? fileEnd : static_cast<std::streamoff>(in.tellg());
+    spans.emplace_back(begin, end);
+    in.clear();
+  }
+  const char* format = encoding == Encoding::Ascii ? "ascii"
+    : encoding == Encoding::LittleEndian           ? "binary_little_endian"
+                                                   : "binary_big_endian";
+  std::string text = std::string("ply\nformat ") + format + " 1.0\n";
+  std::vector<std::size_t> kept{ static_cast<std::size_t>(vertex - elements.begin()) };
+  if (face != elements.end())
+  {
+    kept.push_back(static_cast<std::size_t>(face - elements.begin()));
+  }
+  for (const std::size_t k : kept)
+  {
+    text += elements[k].HeaderLines;
+  }
+  text += "end_header\n";
+  for (const std::size_t k : kept)
+  {
+    const auto [begin, end] = spans[k];
+    std::string block(static_cast<std::size_t>(end - begin), '\0');
+    in.seekg(begin);
+    in.read(&block[0], static_cast<std::streamsize>(block.size()));
+    text += block;
+    // Every ASCII line ends in a line break: VTK's parser fails an assertion (which ends the
+    // program) at the end of the file inside a line.
+    if (encoding == Encoding::Ascii && !block.empty() && block.back() != '\n')
+    {
+      text += '\n';
+    }
+  }
+  return in ? text : std::string();
 }
 
 namespace
@@ -816,6 +905,14 @@ std::string CheckLegacySections(const std::string& fileName)
 
 std::string CheckSTLFile(const std::string& fileName)
 {
+  long long triangles = 0, trailingBytes = 0;
+  return CheckSTLFile(fileName, triangles, trailingBytes);
+}
+
+std::string CheckSTLFile(const std::string& fileName, long long& triangles, long long& trailingBytes)
+{
+  triangles = -1;
+  trailingBytes = 0;
   const long long size = FileSize(fileName);
   std::ifstream in(fileName, std::ios::binary);
   std::string head(static_cast<size_t>(std::max(0LL, std::min<long long>(size, 256))), '\0');
@@ -848,6 +945,8 @@ std::string CheckSTLFile(const std::string& fileName)
             << " bytes holds at most " << room;
     return message.str();
   }
+  triangles = claimed;
+  trailingBytes = size - 84 - 50 * claimed;
   return {};
 }
 }

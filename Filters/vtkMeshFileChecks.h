@@ -25,9 +25,14 @@ namespace vtk
 /// index outside [0, number of vertices).
 std::string CheckPLYFile(const std::string& fileName);
 
-/// True for an ASCII PLY file whose last line has no line break: VTK 9.2's PLY reader hits
-/// the end of the file inside that line and fails an assertion (which ends the program).
-bool PLYNeedsFinalLineBreak(const std::string& fileName);
+/// The text of a PLY file that passed CheckPLYFile, rewritten so that VTK 9.2's PLY reader
+/// can read it, or an empty string when it can read the file as it is. Its parser crashes
+/// (vtkPLY::get_ascii_item) or misreads the faces of a binary file on an element other than
+/// `vertex` and `face` (a material list, a camera), reads the faces only after the vertices,
+/// and fails an assertion (ending the program) on an ASCII file whose last line has no line
+/// break. The rewrite keeps the vertex element, then the face element, byte for byte with
+/// their header lines, and ends an ASCII file with a line break.
+std::string ReadablePLYText(const std::string& fileName);
 
 /// Fails when the counts in a legacy .vtk file's section headers (POINTS, POLYGONS,
 /// VERTICES, LINES, TRIANGLE_STRIPS, POINT_DATA, CELL_DATA) or a .vtp file's Piece
@@ -51,6 +56,9 @@ std::string CheckLegacySections(const std::string& fileName);
 /// holds: VTK's STL reader allocates the claim (2e9 triangles end the program in
 /// vtkCellArray::AllocateExact). ASCII STL files (text from "solid" on) pass.
 std::string CheckSTLFile(const std::string& fileName);
+/// The same, and for a binary file the triangles its header counts and the bytes that
+/// follow them (-1 and 0 for an ASCII file).
+std::string CheckSTLFile(const std::string& fileName, long long& triangles, long long& trailingBytes);
 }
 }
 

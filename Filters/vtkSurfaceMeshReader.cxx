@@ -9,6 +9,7 @@
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMergePoints.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
@@ -25,6 +26,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
@@ -426,6 +428,54 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
   }
   return VTKMessageReason(error);
 }
+
+// The `count` triangles of a binary STL file, their corners merged where their coordinates
+// are equal and the triangles that merging collapses dropped, as VTK's STL reader does. VTK's
+// reader reads triangles to the end of the file and sizes its arrays by the file's length:
+// padding after the triangles becomes triangles, and 512 MB of it exhausts a 1 GB address
+// space. Empty string, or the reason the file cannot be read.
+std::string ReadBinarySTLTriangles(const std::string& fileName, long long count, vtkPolyData* mesh)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  in.seekg(84);
+  vtkNew<vtkPoints> corners; // float, as in the file
+  corners->SetNumberOfPoints(3 * count);
+  char facet[50];
+  for (long long t = 0; t < count; ++t)
+  {
+    if (!in.read(facet, sizeof facet))
+    {
+      return "the file ends inside triangle " + std::to_string(t);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      float xyz[3]; // little-endian in the file, as VTK's reader assumes of the host
+      std::memcpy(xyz, facet + 12 * (k + 1), sizeof xyz);
+      corners->SetPoint(3 * t + k, xyz[0], xyz[1], xyz[2]);
+    }
+  }
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkMergePoints> locator;
+  double bounds[6];
+  corners->GetBounds(bounds);
+  locator->InitPointInsertion(points, bounds);
+  for (long long t = 0; t < count; ++t)
+  {
+    vtkIdType ids[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      locator->InsertUniquePoint(corners->GetPoint(3 * t + k), ids[k]);
+    }
+    if (ids[0] != ids[1] && ids[0] != ids[2] && ids[1] != ids[2])
+    {
+      triangles->InsertNextCell(3, ids);
+    }
+  }
+  mesh->SetPoints(points);
+  mesh->SetPolys(triangles);
+  return {};
+}
 }
 
 //------------------------------------------------------------------------------
@@ -476,13 +526,14 @@ int vtkSurfaceMeshReader::ComputeOutput(
     return 0;
   }
   struct stat information;
-  if (stat(fileName.c_str(), &information) != 0 || !std::ifstream(fileName))
+  if (stat(fileName.c_str(), &information) != 0)
   {
     vtkErrorMacro(<< fileName << ": cannot open the file for reading.");
     return 0;
   }
   // A directory opens as an empty stream, and a device such as /dev/zero never ends: the
-  // parsers below would report nonsense or read forever.
+  // parsers below would report nonsense or read forever. Checked before the file is opened:
+  // opening a FIFO waits for a writer, possibly forever.
   if (S_ISDIR(information.st_mode))
   {
     vtkErrorMacro(<< fileName << ": is a directory, not a mesh file.");
@@ -492,6 +543,11 @@ int vtkSurfaceMeshReader::ComputeOutput(
   {
     vtkErrorMacro(<< fileName << ": is not a regular file (a device, pipe or socket); "
                   << "save the mesh to a file first.");
+    return 0;
+  }
+  if (!std::ifstream(fileName))
+  {
+    vtkErrorMacro(<< fileName << ": cannot open the file for reading.");
     return 0;
   }
   const std::string extension = LowerCaseExtension(fileName);
@@ -508,6 +564,7 @@ int vtkSurfaceMeshReader::ComputeOutput(
   else
   {
     vtkSmartPointer<vtkAlgorithm> reader;
+    bool readHere = false; // read without VTK's reader
     if (extension == "ply")
     {
       // VTK's PLY reader looks up the points of each face as it reads: a bad index must be
@@ -515,21 +572,26 @@ int vtkSurfaceMeshReader::ComputeOutput(
       error = mobius::vtk::CheckPLYFile(fileName);
       auto ply = vtkSmartPointer<vtkPLYReader>::New();
       ply->SetFileName(fileName.c_str());
-      if (error.empty() && mobius::vtk::PLYNeedsFinalLineBreak(fileName))
+      const std::string readable = error.empty() ? mobius::vtk::ReadablePLYText(fileName) : "";
+      if (!readable.empty())
       {
-        // The data is complete (the check read all of it), only the line break is missing:
-        // give the reader the text with one.
-        std::ifstream file(fileName, std::ios::binary);
-        std::ostringstream text;
-        text << file.rdbuf() << '\n';
-        ply->SetInputString(text.str());
+        ply->SetInputString(readable);
         ply->ReadFromInputStringOn();
       }
       reader = ply;
     }
     else if (extension == "stl")
     {
-      error = mobius::vtk::CheckSTLFile(fileName);
+      long long triangles = 0, trailingBytes = 0;
+      error = mobius::vtk::CheckSTLFile(fileName, triangles, trailingBytes);
+      if (error.empty() && trailingBytes > 0)
+      {
+        // VTK's reader would take the bytes after the header's triangles for triangles too.
+        vtkWarningMacro(<< fileName << ": " << trailingBytes << " bytes after the "
+                        << triangles << " triangles the header counts are ignored.");
+        error = ReadBinarySTLTriangles(fileName, triangles, mesh);
+        readHere = true;
+      }
       auto stl = vtkSmartPointer<vtkSTLReader>::New();
       stl->SetFileName(fileName.c_str());
       reader = stl;
@@ -558,7 +620,7 @@ int vtkSurfaceMeshReader::ComputeOutput(
                     << "' (supported: .obj, .off, .ply, .stl, .vtp, .vtk).");
       return 0;
     }
-    if (error.empty())
+    if (error.empty() && !readHere)
     {
       error = ReadWithVTK(reader, mesh);
     }

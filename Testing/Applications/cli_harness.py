@@ -14,15 +14,19 @@ class Harness:
         self.work = work
         self.failures = []
 
-    def run(self, *arguments, env=None, cwd=None, timeout=600, memory=None):
+    def run(self, *arguments, env=None, cwd=None, timeout=600, memory=None, stack=None):
         """Exit code, standard output and error; a run that hangs is killed and counts as code
-        None. `memory`: a limit on the program's address space, in bytes."""
+        None. `memory`: a limit on the program's address space, `stack` on its stack (that of
+        the main thread, and the default of every other), in bytes."""
         def limit():
-            resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+            if memory:
+                resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+            if stack:
+                resource.setrlimit(resource.RLIMIT_STACK, (stack, stack))
         try:
             result = subprocess.run([self.program, *arguments], cwd=cwd or self.work, env=env,
-                                    capture_output=True, text=True, errors="replace",
-                                    timeout=timeout, preexec_fn=limit if memory else None)
+                                    capture_output=True, text=True, errors="replace", timeout=timeout,
+                                    preexec_fn=limit if memory or stack else None)
         except subprocess.TimeoutExpired:
             return None, "", f"timed out after {timeout} s"
         return result.returncode, result.stdout, result.stderr

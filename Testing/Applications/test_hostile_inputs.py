@@ -237,9 +237,6 @@ off_tetra = bytes_of("off", tetra).decode()
 ply_tetra = bytes_of("ply-ascii", tetra).decode()
 vtk_tetra = bytes_of("vtk-ascii", tetra).decode()
 vtp_tetra = bytes_of("vtp-ascii", tetra).decode()
-ply_faces_first = ("ply\nformat ascii 1.0\nelement face 4\nproperty list uchar int vertex_indices\n"
-                   "element vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
-                   "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n0 0 0\n1 0 0\n0 2 0\n0 0 3\n")
 counts = {
     "off face count 2e9": ("c1.off", off_tetra.replace("4 4 0", "4 2000000000 0"), ["2000000000"]),
     "off negative vertex count": ("c2.off", off_tetra.replace("4 4 0", "-4 4 0"), ["count"]),
@@ -261,7 +258,6 @@ counts = {
                                         ["no list property 'vertex_indices'"]),
     "ply no vertex element": ("c27.ply", ply_tetra.replace("element vertex", "element point"),
                               ["no 'vertex' element"]),
-    "ply faces before vertices": ("c28.ply", ply_faces_first, ["before the vertex element"]),
     "ply vertices only": ("c29.ply", ply_tetra.replace("element face 4", "element face 0").split("3 0 2 1")[0],
                           ["no triangles"]),
     "vtk negative index": ("c10.vtk", vtk_tetra.replace("3 0 2 1", "3 0 2 -1"), ["-1"]),
@@ -289,6 +285,45 @@ counts = {
 }
 for label, (name, text, expected) in counts.items():
     expect_error(label, write(name, text.encode()), expected)
+expect_error("ply float vertex indices",
+             write("c30.ply", ply_tetra.replace("list uchar int vertex_indices", "list uchar float vertex_indices")
+                   .encode()), ["floating-point", "integer type"])
+
+
+# Valid PLY files that VTK 9.2's reader crashed on (an element other than vertex and face,
+# in ASCII) or misread (the same in binary: "holes"), or refused (faces before vertices):
+# elements in any order, every encoding, each read as the vertices and faces it holds.
+def ply_elements(fmt, mesh, order):
+    """A PLY file of `mesh` with its elements in `order`, a string of v (vertex), f (face)
+    and m (a material element with a list property)."""
+    encoding = {"ply-ascii": "ascii", "ply-little": "binary_little_endian", "ply-big": "binary_big_endian"}[fmt]
+    points, faces = mesh
+    header = {"v": "element vertex %d\nproperty double x\nproperty double y\nproperty double z\n" % len(points),
+              "f": "element face %d\nproperty list uchar int vertex_indices\n" % len(faces),
+              "m": "element material 2\nproperty float shine\nproperty list uchar int ids\n"}
+    if fmt == "ply-ascii":
+        data = {"v": "".join("%.17g %.17g %.17g\n" % tuple(p) for p in points).encode(),
+                "f": "".join(" ".join(map(str, [len(f), *f])) + "\n" for f in faces).encode(),
+                "m": b"0.5 2 7 8\n0.25 1 9\n"}
+    else:
+        order_char = "<" if fmt == "ply-little" else ">"
+        data = {"v": b"".join(struct.pack(order_char + "3d", *p) for p in points),
+                "f": b"".join(struct.pack(order_char + "B%di" % len(f), len(f), *f) for f in faces),
+                "m": struct.pack(order_char + "fB2i", 0.5, 2, 7, 8) + struct.pack(order_char + "fBi", 0.25, 1, 9)}
+    text = "ply\nformat %s 1.0\n" % encoding + "".join(header[e] for e in order) + "end_header\n"
+    return text.encode() + b"".join(data[e] for e in order)
+
+
+for fmt in ("ply-ascii", "ply-little", "ply-big"):
+    for order, what in (("mvf", "an element before the vertices"), ("vmf", "an element between vertices and faces"),
+                        ("vfm", "an element after the faces"), ("fv", "faces before vertices"),
+                        ("fmv", "faces, an element, vertices")):
+        name = write(f"elements-{order}-{fmt}.ply", ply_elements(fmt, lumpy, order))
+        expect_result(f"{fmt}: {what}", name, lumpy[0])
+# The same without the final line break (ASCII): VTK's parser failed an assertion on it.
+expect_result("ply-ascii: an element before the vertices, no final line break",
+              write("elements-nobreak.ply", ply_elements("ply-ascii", lumpy, "mvf").rstrip(b"\n")), lumpy[0])
+
 # The same in a binary legacy file: the first cell's count (big-endian) past the section.
 binary = bytes_of("vtk-binary", tetra)
 at = binary.index(b"POLYGONS 4 16\n") + len(b"POLYGONS 4 16\n")
@@ -407,7 +442,43 @@ for fmt in ("off", "obj", "ply-little", "vtp-ascii"):
     name = write(file_name("unreferenced", fmt), bytes_of(fmt, far))
     expect_result(f"unreferenced vertices {fmt}", name, far[0], sources=range(1, len(points) + 1))
 
-# --- 7. Random mutations (fixed seed): bytes changed, inserted, deleted in valid files. ----
+# --- 7. The process's limits. ----------------------------------------------------------------
+# AddressSanitizer reserves terabytes of address space and more stack per frame: the
+# sanitizer build skips the runs under limits.
+with open(program, "rb") as binary:
+    sanitized = b"AddressSanitizer" in binary.read()
+# Bytes after a binary STL's triangles are not triangles: ignored, with a warning. VTK's reader
+# read them as triangles to the end of the file (here one far away: a second component) and
+# sized its arrays by the file's length (512 MB of zeros, sparse here, ended the program in
+# vtkPoints::Allocate under a 1 GB address space).
+stl = bytes_of("stl-binary", lumpy)
+far_triangle = struct.pack("<12fH", 0, 0, 1, 10, 10, 10, 11, 10, 10, 10, 11, 10, 0)
+padded = write("padded.stl", stl + far_triangle + b"\0" * 7)
+arguments, output, code, err = register(padded, FAST)
+if check(code == 0, f"{arguments}: exit code {code}: {err!r}"):
+    check("57 bytes after the 320 triangles" in err, f"padded STL: no warning of the bytes ignored: {err!r}")
+    check_result("binary STL with bytes after its triangles", output, self_map=True)
+    outcomes.append(("binary STL with bytes after its triangles", "result, warning"))
+sparse = write("zero-padded.stl", stl)
+with open(os.path.join(work, sparse), "r+b") as f:
+    f.truncate(len(stl) + 512 * 2 ** 20)
+if not sanitized:
+    code, _, err = harness.run(sparse, sparse, "-o", "zero-padded", *FAST, "--quiet", timeout=timeout,
+                               memory=2 ** 30)
+    if check(code == 0, f"binary STL with 512 MB of zeros after it, 1 GB address space: exit code {code}: {err!r}"):
+        check_result("binary STL with 512 MB of zeros after it", "zero-padded", self_map=True)
+        outcomes.append(("binary STL with 512 MB of zeros after it, 1 GB address space", "result"))
+    # A small stack (256 KB): the worker threads get stacks of their own size; they
+    # overflowed inside Eigen (from about 2,500 vertices on). The refinement included.
+    fine = off("lumpy2562", mesh_files.lumpy_sphere(4))
+    code, _, err = harness.run(fine, fine, "-o", "small-stack", "--resolution", "32", "--threads", "2",
+                               "--basis-size", "20", "--quiet", timeout=timeout, stack=256 * 2 ** 10)
+    if check(code == 0, f"a 256 KB stack: exit code {code}: {err!r}"):
+        check_result("a 256 KB stack, two threads", "small-stack", self_map=True)
+        outcomes.append(("a 256 KB stack, two threads", "result"))
+os.remove(os.path.join(work, sparse))
+
+# --- 8. Random mutations (fixed seed): bytes changed, inserted, deleted in valid files. ----
 mutator = random.Random(7)
 for fmt in FORMATS:
     original = bytes_of(fmt, lumpy)

@@ -1,10 +1,10 @@
-// A minimal dynamic parallel loop on std::thread: calls work(index, thread) for every index in
+// A minimal dynamic parallel loop on worker threads (WorkerThread): calls work(index, thread) for every index in
 // [0, count), handing out indices one at a time so uneven work balances out. thread is in
 // [0, numberOfThreads) and lets the caller keep per-thread scratch space; thread 0 is the
 // calling thread.
 //
 // An exception thrown by work (std::bad_alloc on a large grid, say) is carried to the caller
-// and rethrown there after every thread has been joined: escaping a std::thread it would
+// and rethrown there after every thread has been joined: escaping a thread it would
 // call std::terminate and take the whole application (ParaView) down with it.
 #ifndef mobius_ParallelFor_h
 #define mobius_ParallelFor_h
@@ -16,6 +16,8 @@
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "WorkerThread.h"
 
 #ifdef __linux__
 #include <sched.h>
@@ -91,13 +93,13 @@ void ParallelFor(int count, int numberOfThreads, Work&& work)
       stop(std::current_exception());
     }
   };
-  std::vector<std::thread> pool;
+  std::vector<WorkerThread> pool;
   try
   {
     pool.reserve(threads - 1);
     for (int thread = 1; thread < threads; ++thread)
     {
-      pool.emplace_back(run, thread);
+      pool.emplace_back([&run, thread] { run(thread); });
     }
   }
   catch (...)
@@ -107,9 +109,9 @@ void ParallelFor(int count, int numberOfThreads, Work&& work)
     // terminates the program.)
   }
   run(0);
-  for (std::thread& t : pool)
+  for (WorkerThread& worker : pool)
   {
-    t.join();
+    worker.Join();
   }
   if (failure)
   {
