@@ -1,6 +1,7 @@
 #include "vtkSurfaceMeshReader.h"
 
 #include "vtkMeshFileChecks.h"
+#include "vtkMeshFileParsers.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkCellArray.h"
@@ -9,7 +10,6 @@
 #include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkMergePoints.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPLYReader.h"
@@ -49,322 +49,6 @@ std::string LowerCaseExtension(const std::string& fileName)
   return extension;
 }
 
-// Next line that is neither empty nor a comment.
-bool NextDataLine(std::istream& in, std::string& line)
-{
-  while (std::getline(in, line))
-  {
-    const auto hash = line.find('#');
-    if (hash != std::string::npos)
-    {
-      line.erase(hash);
-    }
-    if (line.find_first_not_of(" \t\r") != std::string::npos)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-// VTK's readers quote what they could not parse ("Unrecognized keyword: <the bytes>"): in a
-// garbage file that is binary, with control characters, escape sequences and line breaks,
-// and it would break the one-line message apart. Keeps printable ASCII, shows the rest as
-// '?' (line breaks as spaces), and cuts the text short.
-std::string PrintableLine(const std::string& text)
-{
-  const size_t longest = 300;
-  std::string printable;
-  for (size_t k = 0; k < text.size() && printable.size() < longest; ++k)
-  {
-    const auto c = static_cast<unsigned char>(text[k]);
-    printable += (c >= 32 && c < 127) ? static_cast<char>(c) : std::isspace(c) ? ' ' : '?';
-  }
-  if (printable.size() < text.size())
-  {
-    printable += "...";
-  }
-  return printable;
-}
-
-// Parses an OFF file: "OFF" (or COFF/NOFF/CNOFF...) header, "V F E", V vertex lines and
-// F face lines "n i_1 ... i_n [color]". Returns an empty string or the reason it failed.
-std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
-{
-  std::ifstream in(fileName);
-  std::string line;
-  if (!NextDataLine(in, line))
-  {
-    return "the file is empty";
-  }
-  std::istringstream header(line);
-  std::string keyword;
-  header >> keyword;
-  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
-  {
-    return "no OFF header";
-  }
-  long long numberOfVertices = -1, numberOfFaces = -1, numberOfEdges = 0;
-  // The counts may follow the keyword on the same line.
-  if (!(header >> numberOfVertices))
-  {
-    if (!NextDataLine(in, line))
-    {
-      return "missing vertex and face counts";
-    }
-    header.clear();
-    header.str(line);
-    header >> numberOfVertices;
-  }
-  header >> numberOfFaces >> numberOfEdges;
-  if (numberOfVertices <= 0 || numberOfFaces < 0)
-  {
-    return "invalid vertex or face count in the header line '" + PrintableLine(line) + "'";
-  }
-  // The counts are allocated before the lines are read: they must be plausible for the
-  // file's size, or a header of a few bytes could ask for gigabytes. A vertex line takes at
-  // least 6 bytes ("0 0 0\n") and a face line 7 ("3 0 1 2"); the bound is looser, so that a
-  // file merely cut short gets the more precise message of the line that is missing.
-  const long long size =
-    static_cast<long long>(std::ifstream(fileName, std::ios::binary | std::ios::ate).tellg());
-  if (numberOfVertices > size / 4 || numberOfFaces > size / 4 ||
-    numberOfVertices + numberOfFaces > size / 4)
-  {
-    std::ostringstream error;
-    error << "the header claims " << numberOfVertices << " vertices and " << numberOfFaces
-          << " faces, more than a file of " << size << " bytes can hold";
-    return error.str();
-  }
-
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numberOfVertices);
-  for (long long i = 0; i < numberOfVertices; ++i)
-  {
-    double p[3];
-    std::string text[3];
-    bool numeric = NextDataLine(in, line);
-    std::istringstream fields(line);
-    for (int k = 0; numeric && k < 3; ++k)
-    {
-      // strtod, not operator>>: it reads "nan", "inf" and overflowing numbers (as infinite),
-      // which must be reported as what they are, not as a malformed line.
-      char* end = nullptr;
-      numeric = static_cast<bool>(fields >> text[k]) &&
-        (p[k] = std::strtod(text[k].c_str(), &end), *end == '\0');
-    }
-    if (!numeric)
-    {
-      std::ostringstream error;
-      error << "vertex " << i << " of " << numberOfVertices << " is missing or malformed";
-      return error.str();
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      if (!std::isfinite(p[k]))
-      {
-        std::ostringstream error;
-        error << "vertex " << i << " has a NaN or infinite coordinate '" << text[k] << "'";
-        return error.str();
-      }
-    }
-    points->SetPoint(i, p);
-  }
-  vtkNew<vtkCellArray> polys;
-  std::vector<vtkIdType> ids;
-  for (long long f = 0; f < numberOfFaces; ++f)
-  {
-    long long n = 0;
-    std::istringstream face;
-    const bool present = NextDataLine(in, line);
-    if (present)
-    {
-      face.str(line);
-      face >> n;
-    }
-    const auto faceError = [&](const std::string& problem) {
-      return "face " + std::to_string(f) + " of " + std::to_string(numberOfFaces) + problem;
-    };
-    if (!present)
-    {
-      return faceError(" is missing: the file ends before it");
-    }
-    // Each index takes at least two characters of the line: a count larger than that is
-    // not allocated (one line "2000000000 0 1 2" would ask for 16 GB).
-    if (n > static_cast<long long>(line.size()) / 2)
-    {
-      return faceError(" claims " + std::to_string(n) + " vertices, but its line lists fewer");
-    }
-    if (n < 3)
-    {
-      return faceError(" has " + std::to_string(n) + " vertices; a face needs at least 3");
-    }
-    ids.resize(static_cast<size_t>(n));
-    for (auto& id : ids)
-    {
-      // Each index whole, so that "1.5" or a number past 64 bits is named, not misread.
-      std::string token;
-      if (!(face >> token))
-      {
-        return faceError(" lists fewer than the " + std::to_string(n) + " vertex indices it claims");
-      }
-      errno = 0;
-      char* end = nullptr;
-      const long long index = std::strtoll(token.c_str(), &end, 10);
-      if (*end != '\0' || errno == ERANGE)
-      {
-        return faceError(" has an invalid vertex index '" + PrintableLine(token) + "'");
-      }
-      if (index < 0 || index >= numberOfVertices)
-      {
-        return faceError(" refers to vertex " + std::to_string(index) +
-          ", out of range: the file has " + std::to_string(numberOfVertices) +
-          " vertices (numbered from 0)");
-      }
-      id = static_cast<vtkIdType>(index);
-    }
-    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-  }
-  output->SetPoints(points);
-  output->SetPolys(polys);
-  return {};
-}
-
-// Parses the positions and faces of an OBJ file. VTK's OBJ reader is not used: with
-// texture coordinates or normals it renumbers the points in order of first use in the faces
-// (so vertex numbers no longer match the file), it turns a NaN coordinate into the previous
-// vertex's, and index 0 or an index past the end corrupts its memory. Here point i is the
-// file's i-th `v`; faces may use `v`, `v/vt`, `v//vn`, `v/vt/vn` and negative (relative)
-// indices, and have any number (>= 3) of vertices; other statements (vt, vn, g, o, s, usemtl,
-// l, p, ...) are skipped. Returns an empty string or the reason it failed.
-std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
-{
-  std::ifstream in(fileName);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
-  std::vector<vtkIdType> ids;
-  // Faces may name vertices defined further down: those are checked at the end.
-  struct ForwardReference
-  {
-    vtkIdType Index;
-    long long Face, Line;
-  };
-  std::vector<ForwardReference> forwardReferences;
-  std::string line, statement;
-  long long lineNumber = 0, faces = 0;
-  while (std::getline(in, line))
-  {
-    ++lineNumber;
-    // A backslash at the end continues the statement on the next line.
-    while (!line.empty() && (line.back() == '\\' || line.back() == '\r'))
-    {
-      const bool continued = line.back() == '\\';
-      line.pop_back();
-      std::string next;
-      if (continued && std::getline(in, next))
-      {
-        ++lineNumber;
-        line += ' ' + next;
-      }
-    }
-    const auto hash = line.find('#');
-    if (hash != std::string::npos)
-    {
-      line.erase(hash);
-    }
-    std::istringstream fields(line);
-    if (!(fields >> statement))
-    {
-      continue;
-    }
-    if (statement == "v")
-    {
-      const vtkIdType vertex = points->GetNumberOfPoints();
-      double p[3];
-      std::string text[3];
-      for (int k = 0; k < 3; ++k)
-      {
-        char* end = nullptr;
-        if (!(fields >> text[k]) || (p[k] = std::strtod(text[k].c_str(), &end), *end != '\0'))
-        {
-          std::ostringstream error;
-          error << "vertex " << vertex << " (line " << lineNumber
-                << ") does not have three numeric coordinates";
-          return error.str();
-        }
-        if (!std::isfinite(p[k]))
-        {
-          std::ostringstream error;
-          error << "vertex " << vertex << " (line " << lineNumber
-                << ") has a NaN or infinite coordinate '" << text[k] << "'";
-          return error.str();
-        }
-      }
-      points->InsertNextPoint(p);
-    }
-    else if (statement == "f")
-    {
-      ids.clear();
-      std::string corner;
-      while (fields >> corner)
-      {
-        // The vertex index is the part before the first '/'.
-        errno = 0;
-        char* end = nullptr;
-        const long long index = std::strtoll(corner.c_str(), &end, 10);
-        const bool isNumber = end != corner.c_str() && (*end == '\0' || *end == '/');
-        const long long defined = points->GetNumberOfPoints();
-        // Relative indices count back from the last vertex defined so far.
-        const long long absolute = index > 0 ? index - 1 : defined + index;
-        if (!isNumber || errno == ERANGE || index == 0 || absolute < 0)
-        {
-          std::ostringstream error;
-          error << "face " << faces << " (line " << lineNumber << ") has an invalid vertex index '"
-                << PrintableLine(corner) << "'"
-                << (isNumber && index == 0 ? " (OBJ numbers vertices from 1)"
-                    : isNumber && index < 0
-                    ? " (a negative index counts back from the last vertex defined before it)"
-                    : "");
-          return error.str();
-        }
-        ids.push_back(static_cast<vtkIdType>(absolute));
-      }
-      if (ids.size() < 3)
-      {
-        std::ostringstream error;
-        error << "face " << faces << " (line " << lineNumber << ") has fewer than 3 vertices";
-        return error.str();
-      }
-      const vtkIdType largest = *std::max_element(ids.begin(), ids.end());
-      if (largest >= points->GetNumberOfPoints())
-      {
-        forwardReferences.push_back({ largest, faces, lineNumber });
-      }
-      polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-      ++faces;
-    }
-  }
-  if (in.bad())
-  {
-    return "reading the file failed";
-  }
-  for (const auto& reference : forwardReferences)
-  {
-    if (reference.Index >= points->GetNumberOfPoints())
-    {
-      std::ostringstream error;
-      error << "face " << reference.Face << " (line " << reference.Line << ") refers to vertex "
-            << reference.Index + 1 << " (OBJ numbering), but the file has "
-            << points->GetNumberOfPoints() << " vertices";
-      return error.str();
-    }
-  }
-  output->SetPoints(points);
-  output->SetPolys(polys);
-  return {};
-}
-
 // The reason in a VTK error message, without its file, line and object prefixes
 // ("ERROR: In file, line n\nvtkXMLPolyDataReader (0x...): "), as one printable line.
 std::string VTKMessageReason(const std::string& message)
@@ -383,7 +67,7 @@ std::string VTKMessageReason(const std::string& message)
   {
     reason.pop_back();
   }
-  return PrintableLine(reason);
+  return mobius::vtk::PrintableLine(reason);
 }
 
 // An observer keeping the first message it sees in `message`.
@@ -427,54 +111,6 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
     return "the VTK XML file cannot be parsed: " + VTKMessageReason(parserError);
   }
   return VTKMessageReason(error);
-}
-
-// The `count` triangles of a binary STL file, their corners merged where their coordinates
-// are equal and the triangles that merging collapses dropped, as VTK's STL reader does. VTK's
-// reader reads triangles to the end of the file and sizes its arrays by the file's length:
-// padding after the triangles becomes triangles, and 512 MB of it exhausts a 1 GB address
-// space. Empty string, or the reason the file cannot be read.
-std::string ReadBinarySTLTriangles(const std::string& fileName, long long count, vtkPolyData* mesh)
-{
-  std::ifstream in(fileName, std::ios::binary);
-  in.seekg(84);
-  vtkNew<vtkPoints> corners; // float, as in the file
-  corners->SetNumberOfPoints(3 * count);
-  char facet[50];
-  for (long long t = 0; t < count; ++t)
-  {
-    if (!in.read(facet, sizeof facet))
-    {
-      return "the file ends inside triangle " + std::to_string(t);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      float xyz[3]; // little-endian in the file, as VTK's reader assumes of the host
-      std::memcpy(xyz, facet + 12 * (k + 1), sizeof xyz);
-      corners->SetPoint(3 * t + k, xyz[0], xyz[1], xyz[2]);
-    }
-  }
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> triangles;
-  vtkNew<vtkMergePoints> locator;
-  double bounds[6];
-  corners->GetBounds(bounds);
-  locator->InitPointInsertion(points, bounds);
-  for (long long t = 0; t < count; ++t)
-  {
-    vtkIdType ids[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      locator->InsertUniquePoint(corners->GetPoint(3 * t + k), ids[k]);
-    }
-    if (ids[0] != ids[1] && ids[0] != ids[2] && ids[1] != ids[2])
-    {
-      triangles->InsertNextCell(3, ids);
-    }
-  }
-  mesh->SetPoints(points);
-  mesh->SetPolys(triangles);
-  return {};
 }
 }
 
@@ -555,11 +191,11 @@ int vtkSurfaceMeshReader::ComputeOutput(
   std::string error;
   if (extension == "off")
   {
-    error = ReadOFF(fileName, mesh);
+    error = mobius::vtk::ReadOFF(fileName, mesh);
   }
   else if (extension == "obj")
   {
-    error = ReadOBJ(fileName, mesh);
+    error = mobius::vtk::ReadOBJ(fileName, mesh);
   }
   else
   {
@@ -580,6 +216,13 @@ int vtkSurfaceMeshReader::ComputeOutput(
       }
       reader = ply;
     }
+    else if (extension == "stl" && mobius::vtk::IsAsciiSTL(fileName))
+    {
+      // VTK's reader takes text that does not start with exactly "solid" (a byte-order
+      // mark, a blank line, "SOLID") for a binary file, and refuses long solid names.
+      error = mobius::vtk::ReadAsciiSTL(fileName, mesh);
+      readHere = true;
+    }
     else if (extension == "stl")
     {
       long long triangles = 0, trailingBytes = 0;
@@ -589,7 +232,7 @@ int vtkSurfaceMeshReader::ComputeOutput(
         // VTK's reader would take the bytes after the header's triangles for triangles too.
         vtkWarningMacro(<< fileName << ": " << trailingBytes << " bytes after the "
                         << triangles << " triangles the header counts are ignored.");
-        error = ReadBinarySTLTriangles(fileName, triangles, mesh);
+        error = mobius::vtk::ReadBinarySTL(fileName, triangles, mesh);
         readHere = true;
       }
       auto stl = vtkSmartPointer<vtkSTLReader>::New();
@@ -636,7 +279,7 @@ int vtkSurfaceMeshReader::ComputeOutput(
   if (!error.empty())
   {
     // One printable line whatever the file held (a header line quoted from a binary file).
-    vtkErrorMacro(<< fileName << ": " << PrintableLine(error));
+    vtkErrorMacro(<< fileName << ": " << mobius::vtk::PrintableLine(error));
     return 0;
   }
   output->ShallowCopy(mesh);

@@ -330,6 +330,47 @@ at = binary.index(b"POLYGONS 4 16\n") + len(b"POLYGONS 4 16\n")
 expect_error("vtk binary cell longer than the connectivity",
              write("c24.vtk", binary[:at] + struct.pack(">i", 200) + binary[at + 4:]), ["cell 0 claims 200 points"])
 
+# Text files as editors and other tools write them: each read as what it holds (they were
+# taken for binary STL, lost OBJ vertex 1, or were refused with a misleading message).
+stl_text = bytes_of("stl-ascii", lumpy).decode()
+obj_text = bytes_of("obj", lumpy).decode()
+off_text = bytes_of("off", lumpy).decode()
+points = lumpy[0]
+written_as = {
+    "stl: a byte-order mark": ("bom.stl", "\ufeff" + stl_text, None),
+    "stl: blank lines and spaces first": ("blank-first.stl", "\n\n   " + stl_text, None),
+    "stl: upper-case keywords": ("upper.stl", stl_text.upper(), None),
+    "stl: a UTF-8 solid name": ("utf8-name.stl", stl_text.replace("solid generated", "solid Würfel ü"), None),
+    "stl: a 300-character solid name": ("long-name.stl", stl_text.replace("solid generated", "solid " + "n" * 300), None),
+    "stl: CR LF line endings": ("crlf.stl", stl_text.replace("\n", "\r\n"), None),
+    "obj: a byte-order mark": ("bom.obj", "\ufeff" + obj_text.split("\n", 1)[1], points),
+    "obj: a comment ending in a backslash": ("comment-backslash.obj", "# a comment \\\n" + obj_text.split("\n", 1)[1], points),
+    "obj: CR line endings": ("cr.obj", obj_text.replace("\n", "\r"), points),
+    "off: a byte-order mark": ("bom.off", "\ufeff" + off_text, points),
+    "off: CR line endings": ("cr.off", off_text.replace("\n", "\r"), points),
+    "off: free format (counts and coordinates over lines)": (
+        "free.off", off_text.replace(" ", "\n", 2 + 3 * len(points)), points),
+    "off: free format (a face's indices on the next line)": (
+        "free-faces.off", off_text.replace("\n3 ", "\n3\n"), points),
+    "off: counts on the keyword's line": ("one-line-header.off", off_text.replace("OFF\n", "OFF ", 1), points),
+    "off: counts joined to the keyword (OFF162)": ("joined-header.off", off_text.replace("OFF\n", "OFF", 1), points),
+    "off: unannounced colors after the coordinates": ("colors-unannounced.off", "\n".join(
+        line + (" 0.5 0.5 0.5" if 1 < k < 2 + len(points) else "")
+        for k, line in enumerate(off_text.split("\n"))), points),
+    "off: nOFF of dimension 3": ("noff.off", off_text.replace("OFF\n", "nOFF\n3\n", 1), points),
+    "off: 4OFF (homogeneous)": ("4off.off", "4OFF\n" + off_text.split("\n", 1)[1].replace(
+        "\n", " 2\n", len(points) + 1).replace(" 0 2\n", " 0\n", 1), None),
+    "off: COFF, colors after the coordinates and the faces": ("coff.off", "COFF\n" + "\n".join(
+        line + (" 0.5 0.5 0.5 1" if k > 0 else "") for k, line in enumerate(off_text.split("\n")[1:-1])) + "\n", points),
+}
+for label, (name, text, truth) in written_as.items():
+    expect_result(label, write(name, text.encode()), truth)
+expect_error("off: nOFF of dimension 2", write("noff2.off", off_text.replace("OFF\n", "nOFF\n2\n", 1).encode()),
+             ["2 coordinates", "3 dimensions"])
+expect_error("off: OFF BINARY", write("binary.off", b"OFF BINARY\n" + struct.pack(">3i", 4, 4, 0)),
+             ["binary OFF", "ASCII OFF"])
+
+
 # --- 6. Meshes a surface mapper meets in the wild. ------------------------------------------
 def off(name, mesh):
     return write(name + ".off", bytes_of("off", mesh))
