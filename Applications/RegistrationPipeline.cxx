@@ -1,6 +1,7 @@
 #include "RegistrationPipeline.h"
 
 #include "ParallelFor.h"
+#include "RegistrationParameters.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
 #include "vtkMobiusCenter.h"
@@ -264,7 +265,7 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   // twice as many vertices to sample them: on a smaller mesh the Möbius map is the answer.
   const vtkIdType smallest = std::min(
     result.Aligned->GetNumberOfPoints(), result.TargetCentered->GetNumberOfPoints());
-  if (smallest < 2 * static_cast<vtkIdType>(options.BasisSize))
+  if (!mobius::RefinementApplies(smallest, options.BasisSize))
   {
     result.Warnings.push_back(sourceName + " -> " + targetName + ": refinement skipped: a map has " +
       std::to_string(smallest) + " vertices, fewer than twice the basis size " +
@@ -276,7 +277,8 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   refinement->SetTargetData(result.TargetCentered);
   refinement->SetOutputGeometry(options.OutputGeometry);
   refinement->SetBasisSize(options.BasisSize);
-  refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), options.BasisSize));
+  refinement->SetStartBasisSize(
+    mobius::ClampToBasisSize(refinement->GetStartBasisSize(), options.BasisSize));
   refinement->SetGeometricPolish(options.GeometricPolish);
   refinement->SetCandidate(options.Candidate);
   refinement->SetNumberOfThreads(threads);
@@ -295,7 +297,8 @@ bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
   {
     return false;
   }
-  if (options.Refine && result.SourceMap->GetNumberOfPoints() < 2 * static_cast<vtkIdType>(options.BasisSize))
+  if (options.Refine &&
+    !mobius::RefinementApplies(result.SourceMap->GetNumberOfPoints(), options.BasisSize))
   {
     result.Warnings.push_back(name + ": refinement skipped: the map has " +
       std::to_string(result.SourceMap->GetNumberOfPoints()) +

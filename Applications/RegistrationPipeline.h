@@ -5,6 +5,7 @@
 #ifndef RegistrationPipeline_h
 #define RegistrationPipeline_h
 
+#include "RegistrationParameters.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
@@ -12,37 +13,8 @@
 #include <string>
 #include <vector>
 
-struct PipelineOptions
-{
-  // vtkSphericalConformalMap
-  int FlowIterations = 100;
-  double FlowTolerance = 1e-4;
-  bool CenterBetweenSteps = true;
-  bool FillHoles = false;
-  bool KeepLargestComponent = false;
-  // false: a degenerate conformal map (DegenerateMap in its field data) is an error
-  bool AllowPoorMaps = false;
-  // vtkMobiusCenter
-  double CenteringTolerance = 1e-10;
-  // Highest spherical-harmonic degree centered against, for both meshes of a registration:
-  // 1 the paper's Möbius centering; 2..8 its generalized centering (§5, Figure 5).
-  int CenteringDegree = 1;
-  bool Centering = true; // symmetry detection only: false for the uncentered comparison
-  // vtkSO3Register
-  int Resolution = 256;
-  double SmoothingTime = 5e-4;
-  int TransformMode = 0; // 0 rotations, 1 reflections, 2 both
-  int NumberOfCandidates = 4;
-  // vtkDenseCorrespondence / vtkCorrespondenceRefinement
-  int OutputGeometry = 0; // 0 target surface, 1 source surface
-  bool Refine = true;     // spectral refinement of the Möbius map (false: the paper's map)
-  int BasisSize = 80;
-  bool GeometricPolish = true; // the refinement's geometric polish (--no-polish: off)
-  int Candidate = -1; // the refinement's candidate to keep (--candidate; -1: it chooses)
-  // Threads of every threaded stage (0: automatic, one per core of the CPU affinity mask,
-  // at most VTK_SMP_MAX_THREADS); the results do not depend on it.
-  int NumberOfThreads = 0;
-};
+// The job's options and their defaults: the core's, one place for every interface.
+using PipelineOptions = mobius::RegistrationParameters;
 
 struct StageTiming
 {

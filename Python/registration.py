@@ -26,24 +26,37 @@ from .vtkMobiusRegistrationFilters import (
 
 __all__ = ["register", "Registration", "RegistrationError"]
 
-# The options and their defaults: the same as mobius-register's.
-DEFAULT_OPTIONS = {
-    "refine": True,               # spectral refinement (False: the Möbius map alone)
-    "basis_size": 80,             # eigenfunctions of the refinement
-    "polish": True,               # the refinement's geometric polish (mobius-register --no-polish: False)
-    "resolution": 256,            # scale-factor grid of the SO(3) correlation (even)
-    "smoothing": 0.0005,          # heat-kernel smoothing time of the scale factors
-    "transform": "rotation",      # rotation | reflection | both
-    "candidates": 4,              # correlation peaks the refinement starts from
-    "candidate": None,            # the refinement's candidate to keep (mobius-register --candidate); None: it chooses
-    "iterations": 100,            # maximum conformal flow steps
-    "tolerance": 1e-4,            # conformal flow convergence tolerance
-    "fill_holes": False,          # close holes instead of rejecting open meshes
-    "keep_largest_component": False,
-    "allow_poor_maps": False,     # accept degenerate conformal maps instead of raising
-    "threads": 0,                 # threads per threaded filter (0: automatic); same results
-}
 _TRANSFORM_MODES = {"rotation": 0, "reflection": 1, "both": 2}
+
+
+def _default_options():
+    """The options and their defaults, read from default-constructed filters (whose defaults
+    are the core's, as mobius-register's are)."""
+    conformal, registration = vtkSphericalConformalMap(), vtkSO3Register()
+    refinement = vtkCorrespondenceRefinement()
+    transforms = {mode: name for name, mode in _TRANSFORM_MODES.items()}
+    candidate = refinement.GetCandidate()
+    return {
+        "refine": True,  # spectral refinement (False: the Möbius map alone)
+        "basis_size": refinement.GetBasisSize(),  # eigenfunctions of the refinement
+        "polish": bool(refinement.GetGeometricPolish()),  # the refinement's geometric polish
+        "resolution": registration.GetResolution(),  # scale-factor grid of the SO(3) correlation (even)
+        "smoothing": registration.GetSmoothingTime(),  # heat-kernel smoothing time of the scale factors
+        "transform": transforms[registration.GetTransformMode()],  # rotation | reflection | both
+        "candidates": registration.GetNumberOfCandidates(),  # correlation peaks the refinement starts from
+        # the refinement's candidate to keep (mobius-register --candidate); None: it chooses
+        "candidate": None if candidate < 0 else candidate,
+        "iterations": conformal.GetMaximumNumberOfIterations(),  # maximum conformal flow steps
+        "tolerance": conformal.GetConvergenceTolerance(),  # conformal flow convergence tolerance
+        "fill_holes": bool(conformal.GetFillHoles()),  # close holes instead of rejecting open meshes
+        "keep_largest_component": bool(conformal.GetKeepLargestComponent()),
+        "allow_poor_maps": False,  # accept degenerate conformal maps instead of raising
+        "threads": registration.GetNumberOfThreads(),  # threads per threaded filter (0: automatic); same results
+    }
+
+
+# The options and their defaults: the same as mobius-register's.
+DEFAULT_OPTIONS = _default_options()
 
 
 class RegistrationError(RuntimeError):
@@ -270,7 +283,7 @@ def register(source, target, **options):
     basis_size = int(options["basis_size"])
     refine = bool(options["refine"])
     smallest = min(source_map.GetNumberOfPoints(), target_map.GetNumberOfPoints())
-    if refine and smallest < 2 * basis_size:
+    if refine and not vtkCorrespondenceRefinement.CanRefine(smallest, basis_size):
         # As mobius-register: the refinement's eigenbasis needs twice as many vertices.
         warnings.warn(f"meshes with fewer than {2 * basis_size} vertices (2 x basis_size): "
                       "the spectral refinement is skipped, the Möbius map is returned")
@@ -279,7 +292,6 @@ def register(source, target, **options):
         correspondence = errors.watch(vtkCorrespondenceRefinement())
         correspondence.SetBasisSize(basis_size)
         correspondence.SetStartBasisSize(min(correspondence.GetStartBasisSize(), basis_size))
-        correspondence.SetScreeningBasisSize(min(correspondence.GetScreeningBasisSize(), basis_size))
         correspondence.SetGeometricPolish(bool(options["polish"]))
         correspondence.SetCandidate(-1 if candidate is None else int(candidate))
     else:
