@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -30,418 +31,403 @@ bool ParseInteger(const std::string& text, int& value)
   value = static_cast<int>(number);
   return true;
 }
-}
 
-std::string UsageText()
+std::string Format(double value)
 {
-  const PipelineOptions defaults;
   std::ostringstream text;
-  text << "usage: mobius-register [options] SOURCE TARGET -o OUT\n"
-          "       mobius-register [options] --symmetry MESH -o OUT\n"
-          "       mobius-register [options] --orbifold N MESH -o OUT [--cones I,J] [--covering]\n"
-          "       mobius-register [options]            (demo on CGAL's cow and a deformed copy)\n"
-          "\n"
-          "Dense correspondence between two closed genus-0 surface meshes by Moebius\n"
-          "registration (Baden, Crane & Kazhdan, SGP 2018): conformal map of each mesh onto the\n"
-          "sphere, canonical centering, rotational alignment by correlation over SO(3), and a\n"
-          "point-to-point map. Meshes: .obj .off .ply .stl .vtp .vtk\n"
-          "\n"
-          "Outputs (existing files are kept unless --force):\n"
-          "  -o, --output OUT       OUT.vtp: the source mesh mapped onto the target, with point\n"
-          "                         arrays TargetCellId, TargetBarycentric, MappedPoints and the\n"
-          "                         target's point arrays; OUT.csv: per source vertex, the target\n"
-          "                         triangle, its vertices and the barycentric coordinates.\n"
-          "                         The demo writes mobius-demo/demo.{vtp,csv,png} by default.\n"
-          "  --png FILE             picture: source colored by position, and the source mesh\n"
-          "                         placed on the target by the map (needs X; use xvfb-run)\n"
-          "\n"
-          "Symmetry (paper Section 7.3):\n"
-          "  --symmetry MESH        bilateral symmetry of one mesh: its best orientation-\n"
-          "                         reversing self-map. OUT.vtp: the mesh with the symmetric\n"
-          "                         map (TargetCellId, TargetBarycentric, MappedPoints: each\n"
-          "                         vertex's mirror image), Asymmetry per vertex and field data\n"
-          "                         SymmetryDistance (0 symmetric .. 1), MirrorPlaneNormal,\n"
-          "                         candidates; OUT.csv as for two meshes, the mesh against\n"
-          "                         itself. Uses the options below except --transform.\n"
-          "  --no-centering         skip the Moebius centering (and the centering between flow\n"
-          "                         steps): the paper's uncentered comparison; the flow then\n"
-          "                         drifts and may need --allow-poor-maps\n"
-          "\n"
-          "Orbifold map (paper Section 7.2):\n"
-          "  --orbifold N MESH      n-fold spherical orbifold map (N = 2..8): cut MESH between\n"
-          "                         two cone vertices, glue N copies into the cyclic covering,\n"
-          "                         map and center it. OUT.vtp: one copy on its 1/N of the\n"
-          "                         sphere (cones on the z axis), with SurfacePoints,\n"
-          "                         InputPointId, field data SymmetryError, StdLogAreaRatio\n"
-          "                         and PlainStdLogAreaRatio (area distortion of this map and\n"
-          "                         of the plain one). Uses the conformal map options below.\n"
-          "  --cones I,J            the cone vertices (vertex numbers in MESH; default two\n"
-          "                         far-apart vertices)\n"
-          "  --covering             OUT.vtp holds the whole covering (all N copies)\n"
-          "\n"
-          "Conformal map:\n"
-          "  --iterations N         maximum flow steps (default "
-       << defaults.FlowIterations
-       << ")\n"
-          "  --tolerance T          flow convergence tolerance, 0 to 1 (default "
-       << defaults.FlowTolerance
-       << ")\n"
-          "  --no-center-flow       plain CMCF: no Moebius centering between flow steps\n"
-          "  --fill-holes           close holes instead of rejecting open meshes\n"
-          "  --keep-largest-component  map only the largest connected component\n"
-          "  --allow-poor-maps      write the result even when a conformal map is degenerate\n"
-          "                         (triangles flipped after repair, area collapsed or\n"
-          "                         squashed, flow not converged, squeezed-region\n"
-          "                         refinement failed)\n"
-          "Centering:\n"
-          "  --degree L             centering degree for both meshes, 1 to 8 (default "
-       << defaults.CenteringDegree
-       << "):\n"
-          "                         1 is the paper's Moebius centering (conformal); 2..8 go on\n"
-          "                         to its generalized centering (Section 5, Figure 5): no\n"
-          "                         area moments of spherical-harmonic degree 1..L, area spread\n"
-          "                         more evenly at the cost of conformality\n"
-          "Registration:\n"
-          "  --resolution N         scale-factor grid size, even, as memory allows (default "
-       << defaults.Resolution
-       << ")\n"
-          "  --smoothing T          heat-kernel smoothing time, 0 to 1 (default "
-       << defaults.SmoothingTime
-       << ")\n"
-          "  --transform MODE       rotation | reflection | both (default rotation)\n"
-          "  --candidates K         correlation peaks to report (default "
-       << defaults.NumberOfCandidates
-       << ")\n"
-          "  --candidate K          keep the refinement's map from candidate K (0..K-1 of\n"
-          "                         --candidates; 0 the best peak) instead of the one it\n"
-          "                         chooses: for a map that came out turned or mirrored\n"
-          "                         while a warning named a near-equal runner-up\n"
-          "Correspondence:\n"
-          "  --refine METHOD        spectral | none: refine the Moebius map (ZoomOut on the\n"
-          "                         surfaces' Laplace-Beltrami bases, from every candidate\n"
-          "                         rotation) or keep the paper's map (default spectral)\n"
-          "  --basis-size K         eigenfunctions of the refinement (default "
-       << defaults.BasisSize
-       << ")\n"
-          "  --no-polish            keep the spectral map: no geometric polish (ARAP\n"
-          "                         non-rigid ICP of the source onto the target) after it\n"
-          "  --output-geometry G    target | source: where OUT.vtp's points are (default target)\n"
-          "Other:\n"
-          "  --threads N            threads per threaded stage, 0 to 1024; 0: one per core\n"
-          "                         this process may use (CPU affinity), at most\n"
-          "                         VTK_SMP_MAX_THREADS if set (default 0); results are the\n"
-          "                         same for any N\n"
-          "  --force                overwrite existing output files\n"
-          "  --quiet                no progress or warnings\n"
-          "  --json                 print a machine-readable summary on standard output\n"
-          "  --version, -h/--help\n"
-          "\n"
-          "Exit status: 0 on success; 1 if a mesh cannot be read or mapped (a degenerate map\n"
-          "included, unless --allow-poor-maps), or an output cannot be written (an existing\n"
-          "file without --force included); 2 for usage errors (unknown options, values out\n"
-          "of range, wrong number of meshes, no -o).\n";
+  text << value;
   return text.str();
 }
 
-bool ParsePipelineOption(
-  int argc, char* argv[], int& i, PipelineOptions& pipeline, bool& recognized, std::string& error)
+using Values = std::vector<std::string>;
+// Applies an option's values to the command line; false with `error` set if they are wrong.
+using Apply = std::function<bool(const Values&, CommandLine&, std::string& error)>;
+
+// One row of the option table: an option, or (no Names) a heading of --help.
+struct Option
 {
-  const std::string option = argv[i];
-  auto value = [&](std::string& out) {
-    if (i + 1 >= argc)
-    {
-      error = option + " needs a value";
+  std::vector<std::string> Names; // as typed, e.g. { "-o", "--output" }
+  std::string Label;              // as --help shows it, e.g. "-o, --output OUT"
+  std::string Help;               // --help's text, one line per '\n'
+  int NumberOfValues = 0;
+  Apply Set;
+  bool Pipeline = false; // shared with mobius-score (ParsePipelineOption)
+  std::string MissingValues; // the message when values are missing ("" : "X needs a value")
+};
+
+Option Heading(const std::string& text)
+{
+  Option heading;
+  heading.Label = text;
+  return heading;
+}
+
+// An option of the job (PipelineOptions) that takes no value.
+Option PipelineFlag(const std::string& name, const std::string& help,
+  bool PipelineOptions::*member, bool value)
+{
+  return { { name }, name, help, 0,
+    [member, value](const Values&, CommandLine& line, std::string&) {
+      line.Pipeline.*member = value;
+      return true;
+    },
+    true };
+}
+
+// An option of the job taking an integer in [minimum, maximum]; `range` says which in the
+// error message ("a positive integer", "an integer from 2 to 500").
+Option PipelineInteger(const std::string& name, const std::string& label, const std::string& help,
+  int PipelineOptions::*member, int minimum, int maximum, const std::string& range)
+{
+  return { { name }, label, help, 1,
+    [=](const Values& values, CommandLine& line, std::string& error) {
+      int number = 0;
+      if (!ParseInteger(values[0], number) || number < minimum || number > maximum)
+      {
+        error = name + " needs " + range + ", not '" + values[0] + "'";
+        return false;
+      }
+      line.Pipeline.*member = number;
+      return true;
+    },
+    true };
+}
+
+std::string IntegerRangeWords(const mobius::IntegerRange& range)
+{
+  return "an integer from " + std::to_string(range.Minimum) + " to " + std::to_string(range.Maximum);
+}
+
+// An option of the job taking a number from 0 to 1. NaN passes every comparison and an
+// infinite or huge smoothing time wipes out the signals (exp(-l(l+1) t) leaves nothing of
+// degree 1 and up well before t = 1): the run would silently return garbage. A relative
+// change above 1 is no tolerance either.
+Option PipelineFraction(const std::string& name, const std::string& label, const std::string& help,
+  double PipelineOptions::*member)
+{
+  return { { name }, label, help, 1,
+    [=](const Values& values, CommandLine& line, std::string& error) {
+      double number = 0;
+      if (!ParseNumber(values[0], number) || !std::isfinite(number) || number < 0 || number > 1)
+      {
+        error = name + " needs a number from 0 to 1, not '" + values[0] + "'";
+        return false;
+      }
+      line.Pipeline.*member = number;
+      return true;
+    },
+    true };
+}
+
+// An option of the job naming one of `words`; sets the word's position.
+Option PipelineChoice(const std::string& name, const std::string& label, const std::string& help,
+  const std::vector<std::string>& words, const std::function<void(PipelineOptions&, int)>& set)
+{
+  std::string list;
+  for (size_t w = 0; w < words.size(); ++w)
+  {
+    list += (w == 0 ? "" : w + 1 == words.size() ? " or " : ", ") + words[w];
+  }
+  return { { name }, label, help, 1,
+    [=](const Values& values, CommandLine& line, std::string& error) {
+      for (size_t w = 0; w < words.size(); ++w)
+      {
+        if (values[0] == words[w])
+        {
+          set(line.Pipeline, static_cast<int>(w));
+          return true;
+        }
+      }
+      error = name + " must be " + list + ", not '" + values[0] + "'";
       return false;
-    }
-    out = argv[++i];
-    return true;
-  };
-  std::string text;
-  recognized = true;
-  if (option == "--no-polish")
+    },
+    true };
+}
+
+// An option of mobius-register alone that takes no value.
+Option Flag(const std::vector<std::string>& names, const std::string& label,
+  const std::string& help, bool CommandLine::*member)
+{
+  return { names, label, help, 0, [member](const Values&, CommandLine& line, std::string&) {
+            line.*member = true;
+            return true;
+          } };
+}
+
+// An option of mobius-register alone that takes a file name.
+Option FileName(const std::vector<std::string>& names, const std::string& label,
+  const std::string& help, std::string CommandLine::*member)
+{
+  return { names, label, help, 1,
+    [member](const Values& values, CommandLine& line, std::string&) {
+      line.*member = values[0];
+      return true;
+    } };
+}
+
+bool SetResolution(const Values& values, CommandLine& line, std::string& error)
+{
+  int number = 0;
+  if (!ParseInteger(values[0], number) || number < 1)
   {
-    pipeline.GeometricPolish = false;
+    error = "--resolution needs a positive integer, not '" + values[0] + "'";
+    return false;
   }
-  else if (option == "--no-center-flow")
+  if (number < mobius::MinimumResolution || number % 2 != 0)
   {
-    pipeline.CenterBetweenSteps = false;
+    error = "--resolution must be even and at least 4, not " + values[0];
+    return false;
   }
-  else if (option == "--fill-holes")
+  // Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
+  if (number > vtkSO3Register::LargestResolution())
   {
-    pipeline.FillHoles = true;
+    std::ostringstream message;
+    message << "--resolution " << number << " needs about "
+            << vtkSO3Register::EstimateMemory(number) / 1e9
+            << " GB, more than this machine's memory; at most "
+            << vtkSO3Register::LargestResolution() << " fits";
+    error = message.str();
+    return false;
   }
-  else if (option == "--keep-largest-component")
-  {
-    pipeline.KeepLargestComponent = true;
-  }
-  else if (option == "--allow-poor-maps")
-  {
-    pipeline.AllowPoorMaps = true;
-  }
-  else if (option == "--refine")
-  {
-    if (!value(text) || (text != "spectral" && text != "none"))
-    {
-      error = error.empty() ? "--refine must be spectral or none, not '" + text + "'" : error;
-      return false;
-    }
-    pipeline.Refine = text == "spectral";
-  }
-  else if (option == "--threads")
-  {
-    int number = 0;
-    if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 1024)
-    {
-      error = error.empty() ? "--threads needs an integer from 0 to 1024, not '" + text + "'" : error;
-      return false;
-    }
-    pipeline.NumberOfThreads = number;
-  }
-  else if (option == "--basis-size")
-  {
-    int number = 0;
-    if (!value(text) || !ParseInteger(text, number) || number < 2 || number > 500)
-    {
-      error = error.empty() ? "--basis-size needs an integer from 2 to 500, not '" + text + "'" : error;
-      return false;
-    }
-    pipeline.BasisSize = number;
-  }
-  else if (option == "--degree")
-  {
-    // vtkMobiusCenter clamps its Degree to 1..8; a value outside is refused, not clamped.
-    int number = 0;
-    if (!value(text) || !ParseInteger(text, number) || number < 1 || number > 8)
-    {
-      error = error.empty() ? "--degree needs an integer from 1 (the paper's Moebius centering) "
-                              "to 8, not '" + text + "'"
-                            : error;
-      return false;
-    }
-    pipeline.CenteringDegree = number;
-  }
-  else if (option == "--iterations" || option == "--resolution" || option == "--candidates")
-  {
-    int number = 0;
-    if (!value(text) || !ParseInteger(text, number) || number < 1)
-    {
-      error = error.empty() ? option + " needs a positive integer, not '" + text + "'" : error;
-      return false;
-    }
-    if (option == "--resolution" && (number < 4 || number % 2 != 0))
-    {
-      error = "--resolution must be even and at least 4, not " + text;
-      return false;
-    }
-    // Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
-    if (option == "--resolution" && number > vtkSO3Register::LargestResolution())
-    {
-      std::ostringstream message;
-      message << "--resolution " << number << " needs about "
-              << vtkSO3Register::EstimateMemory(number) / 1e9
-              << " GB, more than this machine's memory; at most "
-              << vtkSO3Register::LargestResolution() << " fits";
-      error = message.str();
-      return false;
-    }
-    (option == "--iterations"       ? pipeline.FlowIterations
-        : option == "--resolution" ? pipeline.Resolution
-                                   : pipeline.NumberOfCandidates) = number;
-  }
-  else if (option == "--candidate")
-  {
-    int number = 0;
-    if (!value(text) || !ParseInteger(text, number) || number < 0 || number > 63)
-    {
-      error = error.empty() ? "--candidate needs an integer from 0 to 63, not '" + text + "'" : error;
-      return false;
-    }
-    pipeline.Candidate = number;
-  }
-  else if (option == "--tolerance" || option == "--smoothing")
-  {
-    // NaN passes every comparison and an infinite or huge smoothing time wipes out the
-    // signals (exp(-l(l+1) t) leaves nothing of degree 1 and up well before t = 1): the
-    // run would silently return garbage. A relative change above 1 is no tolerance either.
-    double number = 0;
-    if (!value(text) || !ParseNumber(text, number) || !std::isfinite(number) || number < 0 ||
-      number > 1)
-    {
-      error = error.empty() ? option + " needs a number from 0 to 1, not '" + text + "'" : error;
-      return false;
-    }
-    (option == "--tolerance" ? pipeline.FlowTolerance
-                             : pipeline.SmoothingTime) = number;
-  }
-  else if (option == "--transform")
-  {
-    if (!value(text))
-    {
-      return false;
-    }
-    const std::vector<std::string> modes = { "rotation", "reflection", "both" };
-    int mode = -1;
-    for (size_t m = 0; m < modes.size(); ++m)
-    {
-      mode = text == modes[m] ? static_cast<int>(m) : mode;
-    }
-    if (mode < 0)
-    {
-      error = "--transform must be rotation, reflection or both, not '" + text + "'";
-      return false;
-    }
-    pipeline.TransformMode = mode;
-  }
-  else if (option == "--output-geometry")
-  {
-    if (!value(text) || (text != "target" && text != "source"))
-    {
-      error = error.empty() ? "--output-geometry must be target or source, not '" + text + "'" : error;
-      return false;
-    }
-    pipeline.OutputGeometry = text == "target" ? 0 : 1;
-  }
-  else
-  {
-    recognized = false;
-  }
+  line.Pipeline.Resolution = number;
   return true;
 }
 
-bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error)
+bool SetSymmetry(const Values& values, CommandLine& line, std::string& error)
 {
-  std::vector<std::string> positional;
-  for (int i = 1; i < argc; ++i)
+  if (line.Symmetry)
   {
-    const std::string option = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc)
-      {
-        error = option + " needs a value";
-        return false;
-      }
-      out = argv[++i];
-      return true;
+    error = "--symmetry takes one mesh and may be given once";
+    return false;
+  }
+  line.Symmetry = true;
+  line.Source = values[0];
+  return true;
+}
+
+bool SetOrbifold(const Values& values, CommandLine& line, std::string& error)
+{
+  if (!ParseInteger(values[0], line.OrbifoldCopies) || line.OrbifoldCopies < 2 ||
+    line.OrbifoldCopies > 8)
+  {
+    error = "--orbifold N: N must be an integer from 2 to 8, not '" + values[0] + "'";
+    return false;
+  }
+  line.Source = values[1];
+  return true;
+}
+
+bool SetCones(const Values& values, CommandLine& line, std::string& error)
+{
+  const std::string& text = values[0];
+  const auto comma = text.find(',');
+  int cone0 = -1, cone1 = -1;
+  if (comma == std::string::npos || !ParseInteger(text.substr(0, comma), cone0) ||
+    !ParseInteger(text.substr(comma + 1), cone1) || cone0 < 0 || cone1 < 0)
+  {
+    error = "--cones takes two vertex numbers I,J (non-negative integers), not '" + text + "'";
+    return false;
+  }
+  if (cone0 == cone1)
+  {
+    error = "--cones: the two cone vertices must differ";
+    return false;
+  }
+  line.Cones[0] = cone0;
+  line.Cones[1] = cone1;
+  return true;
+}
+
+// Every option of mobius-register, in the order of --help, which is made from it.
+const std::vector<Option>& Options()
+{
+  static const std::vector<Option> options = [] {
+    const PipelineOptions defaults;
+    const std::string maximum = std::to_string(std::numeric_limits<int>::max());
+    const int largest = std::numeric_limits<int>::max();
+    std::vector<Option> table = {
+      Heading("Outputs (existing files are kept unless --force):"),
+      FileName({ "-o", "--output" }, "-o, --output OUT",
+        "OUT.vtp: the source mesh mapped onto the target, with point\n"
+        "arrays TargetCellId, TargetBarycentric, MappedPoints and the\n"
+        "target's point arrays; OUT.csv: per source vertex, the target\n"
+        "triangle, its vertices and the barycentric coordinates.\n"
+        "The demo writes mobius-demo/demo.{vtp,csv,png} by default.",
+        &CommandLine::Output),
+      FileName({ "--png" }, "--png FILE",
+        "picture: source colored by position, and the source mesh\n"
+        "placed on the target by the map (needs X; use xvfb-run)",
+        &CommandLine::Picture),
+      Heading("\nSymmetry (paper Section 7.3):"),
+      { { "--symmetry" }, "--symmetry MESH",
+        "bilateral symmetry of one mesh: its best orientation-\n"
+        "reversing self-map. OUT.vtp: the mesh with the symmetric\n"
+        "map (TargetCellId, TargetBarycentric, MappedPoints: each\n"
+        "vertex's mirror image), Asymmetry per vertex and field data\n"
+        "SymmetryDistance (0 symmetric .. 1), MirrorPlaneNormal,\n"
+        "candidates; OUT.csv as for two meshes, the mesh against\n"
+        "itself. Uses the options below except --transform.",
+        1, SetSymmetry },
+      { { "--no-centering" }, "--no-centering",
+        "skip the Moebius centering (and the centering between flow\n"
+        "steps): the paper's uncentered comparison; the flow then\n"
+        "drifts and may need --allow-poor-maps",
+        0,
+        [](const Values&, CommandLine& line, std::string&) {
+          line.Pipeline.Centering = false;
+          return true;
+        } },
+      Heading("\nOrbifold map (paper Section 7.2):"),
+      { { "--orbifold" }, "--orbifold N MESH",
+        "n-fold spherical orbifold map (N = 2..8): cut MESH between\n"
+        "two cone vertices, glue N copies into the cyclic covering,\n"
+        "map and center it. OUT.vtp: one copy on its 1/N of the\n"
+        "sphere (cones on the z axis), with SurfacePoints,\n"
+        "InputPointId, field data SymmetryError, StdLogAreaRatio\n"
+        "and PlainStdLogAreaRatio (area distortion of this map and\n"
+        "of the plain one). Uses the conformal map options below.",
+        2, SetOrbifold, false, "--orbifold takes N (2..8) and a mesh" },
+      { { "--cones" }, "--cones I,J",
+        "the cone vertices (vertex numbers in MESH; default two\n"
+        "far-apart vertices)",
+        1, SetCones },
+      Flag({ "--covering" }, "--covering", "OUT.vtp holds the whole covering (all N copies)",
+        &CommandLine::Covering),
+      Heading("\nConformal map:"),
+      PipelineInteger("--iterations", "--iterations N",
+        "maximum flow steps (default " + std::to_string(defaults.FlowIterations) + ")",
+        &PipelineOptions::FlowIterations, 1, largest, "a positive integer"),
+      PipelineFraction("--tolerance", "--tolerance T",
+        "flow convergence tolerance, 0 to 1 (default " + Format(defaults.FlowTolerance) + ")",
+        &PipelineOptions::FlowTolerance),
+      PipelineFlag("--no-center-flow", "plain CMCF: no Moebius centering between flow steps",
+        &PipelineOptions::CenterBetweenSteps, false),
+      PipelineFlag("--fill-holes", "close holes instead of rejecting open meshes",
+        &PipelineOptions::FillHoles, true),
+      PipelineFlag("--keep-largest-component", "map only the largest connected component",
+        &PipelineOptions::KeepLargestComponent, true),
+      PipelineFlag("--allow-poor-maps",
+        "write the result even when a conformal map is degenerate\n"
+        "(triangles flipped after repair, area collapsed or\n"
+        "squashed, flow not converged, squeezed-region\n"
+        "refinement failed)",
+        &PipelineOptions::AllowPoorMaps, true),
+      Heading("Centering:"),
+      // vtkMobiusCenter clamps its Degree to this range; a value outside is refused, not clamped.
+      PipelineInteger("--degree", "--degree L",
+        "centering degree for both meshes, " + std::to_string(mobius::CenteringDegreeRange.Minimum) +
+          " to " + std::to_string(mobius::CenteringDegreeRange.Maximum) + " (default " +
+          std::to_string(defaults.CenteringDegree) +
+          "):\n"
+          "1 is the paper's Moebius centering (conformal); 2..8 go on\n"
+          "to its generalized centering (Section 5, Figure 5): no\n"
+          "area moments of spherical-harmonic degree 1..L, area spread\n"
+          "more evenly at the cost of conformality",
+        &PipelineOptions::CenteringDegree, mobius::CenteringDegreeRange.Minimum,
+        mobius::CenteringDegreeRange.Maximum,
+        "an integer from 1 (the paper's Moebius centering) to " +
+          std::to_string(mobius::CenteringDegreeRange.Maximum)),
+      Heading("Registration:"),
+      { { "--resolution" }, "--resolution N",
+        "scale-factor grid size, even, as memory allows (default " +
+          std::to_string(defaults.Resolution) + ")",
+        1, SetResolution, true },
+      PipelineFraction("--smoothing", "--smoothing T",
+        "heat-kernel smoothing time, 0 to 1 (default " + Format(defaults.SmoothingTime) + ")",
+        &PipelineOptions::SmoothingTime),
+      PipelineChoice("--transform", "--transform MODE",
+        "rotation | reflection | both (default rotation)", { "rotation", "reflection", "both" },
+        [](PipelineOptions& pipeline, int mode) { pipeline.TransformMode = mode; }),
+      PipelineInteger("--candidates", "--candidates K",
+        "correlation peaks to report (default " + std::to_string(defaults.NumberOfCandidates) + ")",
+        &PipelineOptions::NumberOfCandidates, 1, largest, "a positive integer"),
+      PipelineInteger("--candidate", "--candidate K",
+        "keep the refinement's map from candidate K (0..K-1 of\n"
+        "--candidates; 0 the best peak) instead of the one it\n"
+        "chooses: for a map that came out turned or mirrored\n"
+        "while a warning named a near-equal runner-up",
+        &PipelineOptions::Candidate, 0, mobius::CandidateRange.Maximum,
+        IntegerRangeWords({ 0, mobius::CandidateRange.Maximum })),
+      Heading("Correspondence:"),
+      PipelineChoice("--refine", "--refine METHOD",
+        "spectral | none: refine the Moebius map (ZoomOut on the\n"
+        "surfaces' Laplace-Beltrami bases, from every candidate\n"
+        "rotation) or keep the paper's map (default spectral)",
+        { "spectral", "none" },
+        [](PipelineOptions& pipeline, int method) { pipeline.Refine = method == 0; }),
+      PipelineInteger("--basis-size", "--basis-size K",
+        "eigenfunctions of the refinement (default " + std::to_string(defaults.BasisSize) + ")",
+        &PipelineOptions::BasisSize, mobius::BasisSizeRange.Minimum,
+        mobius::BasisSizeRange.Maximum, IntegerRangeWords(mobius::BasisSizeRange)),
+      PipelineFlag("--no-polish",
+        "keep the spectral map: no geometric polish (ARAP\n"
+        "non-rigid ICP of the source onto the target) after it",
+        &PipelineOptions::GeometricPolish, false),
+      PipelineChoice("--output-geometry", "--output-geometry G",
+        "target | source: where OUT.vtp's points are (default target)", { "target", "source" },
+        [](PipelineOptions& pipeline, int geometry) { pipeline.OutputGeometry = geometry; }),
+      Heading("Other:"),
+      PipelineInteger("--threads", "--threads N",
+        "threads per threaded stage, " + std::to_string(mobius::ThreadCountRange.Minimum) +
+          " to " + std::to_string(mobius::ThreadCountRange.Maximum) +
+          "; 0: one per core\n"
+          "this process may use (CPU affinity), at most\n"
+          "VTK_SMP_MAX_THREADS if set (default " +
+          std::to_string(defaults.NumberOfThreads) +
+          "); results are the\n"
+          "same for any N",
+        &PipelineOptions::NumberOfThreads, mobius::ThreadCountRange.Minimum,
+        mobius::ThreadCountRange.Maximum, IntegerRangeWords(mobius::ThreadCountRange)),
+      Flag({ "--force" }, "--force", "overwrite existing output files", &CommandLine::Force),
+      Flag({ "--quiet" }, "--quiet", "no progress or warnings", &CommandLine::Quiet),
+      Flag({ "--json" }, "--json", "print a machine-readable summary on standard output",
+        &CommandLine::Json),
+      Flag({ "--version" }, "", "", &CommandLine::Version),
+      Flag({ "-h", "--help" }, "--version, -h/--help", "", &CommandLine::Help),
     };
-    std::string text;
-    bool pipelineOption = false;
-    if (!ParsePipelineOption(argc, argv, i, commandLine.Pipeline, pipelineOption, error))
-    {
-      return false;
-    }
-    if (pipelineOption)
-    {
-      continue;
-    }
-    if (option == "-h" || option == "--help")
-    {
-      commandLine.Help = true;
-    }
-    else if (option == "--version")
-    {
-      commandLine.Version = true;
-    }
-    else if (option == "--force")
-    {
-      commandLine.Force = true;
-    }
-    else if (option == "--quiet")
-    {
-      commandLine.Quiet = true;
-    }
-    else if (option == "--json")
-    {
-      commandLine.Json = true;
-    }
-    else if (option == "--symmetry")
-    {
-      std::string mesh;
-      if (!value(mesh))
-      {
-        return false;
-      }
-      if (commandLine.Symmetry)
-      {
-        error = "--symmetry takes one mesh and may be given once";
-        return false;
-      }
-      commandLine.Symmetry = true;
-      commandLine.Source = mesh;
-    }
-    else if (option == "--orbifold")
-    {
-      std::string copies, mesh;
-      if (!value(copies) || !value(mesh))
-      {
-        error = "--orbifold takes N (2..8) and a mesh";
-        return false;
-      }
-      if (!ParseInteger(copies, commandLine.OrbifoldCopies) || commandLine.OrbifoldCopies < 2 ||
-        commandLine.OrbifoldCopies > 8)
-      {
-        error = "--orbifold N: N must be an integer from 2 to 8, not '" + copies + "'";
-        return false;
-      }
-      commandLine.Source = mesh;
-    }
-    else if (option == "--cones")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      const auto comma = text.find(',');
-      int cone0 = -1, cone1 = -1;
-      if (comma == std::string::npos || !ParseInteger(text.substr(0, comma), cone0) ||
-        !ParseInteger(text.substr(comma + 1), cone1) || cone0 < 0 || cone1 < 0)
-      {
-        error = "--cones takes two vertex numbers I,J (non-negative integers), not '" + text + "'";
-        return false;
-      }
-      if (cone0 == cone1)
-      {
-        error = "--cones: the two cone vertices must differ";
-        return false;
-      }
-      commandLine.Cones[0] = cone0;
-      commandLine.Cones[1] = cone1;
-    }
-    else if (option == "--covering")
-    {
-      commandLine.Covering = true;
-    }
-    else if (option == "--no-centering")
-    {
-      commandLine.Pipeline.Centering = false;
-    }
-    else if (option == "-o" || option == "--output")
-    {
-      if (!value(commandLine.Output))
-      {
-        return false;
-      }
-    }
-    else if (option == "--png")
-    {
-      if (!value(commandLine.Picture))
-      {
-        return false;
-      }
-    }
-    else if (option.size() > 1 && option[0] == '-')
-    {
-      error = "unknown option " + option + " (see --help)";
-      return false;
-    }
-    else
-    {
-      positional.push_back(option);
-    }
-  }
-  if (commandLine.Help || commandLine.Version)
+    return table;
+  }();
+  return options;
+}
+
+// The table's row for `name`, or null.
+const Option* FindOption(const std::string& name)
+{
+  for (const auto& option : Options())
   {
-    return true;
+    for (const auto& known : option.Names)
+    {
+      if (known == name)
+      {
+        return &option;
+      }
+    }
   }
+  return nullptr;
+}
+
+// Applies `option` to argv[i] onwards, advancing i past its values.
+bool ApplyOption(const Option& option, int argc, char* argv[], int& i, CommandLine& commandLine,
+  std::string& error)
+{
+  const std::string name = argv[i];
+  Values values;
+  while (static_cast<int>(values.size()) < option.NumberOfValues)
+  {
+    if (i + 1 >= argc)
+    {
+      error = option.MissingValues.empty() ? name + " needs a value" : option.MissingValues;
+      return false;
+    }
+    values.push_back(argv[++i]);
+  }
+  return option.Set(values, commandLine, error);
+}
+
+// The rules between options, checked once they are all read.
+bool CheckCombination(
+  CommandLine& commandLine, const std::vector<std::string>& positional, std::string& error)
+{
   // Symmetry detection and the orbifold map center with the Möbius centering only.
   if (commandLine.Pipeline.CenteringDegree != 1 &&
     (commandLine.OrbifoldCopies > 0 || commandLine.Symmetry))
@@ -462,19 +448,13 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
       error = "--png and --no-centering are not available with --orbifold";
       return false;
     }
-    if (commandLine.Output.empty())
-    {
-      error = "no output given: add -o OUT";
-      return false;
-    }
-    return true;
   }
-  if (commandLine.Cones[0] >= 0 || commandLine.Covering)
+  else if (commandLine.Cones[0] >= 0 || commandLine.Covering)
   {
     error = "--cones and --covering are for --orbifold only";
     return false;
   }
-  if (commandLine.Symmetry)
+  else if (commandLine.Symmetry)
   {
     if (!positional.empty())
     {
@@ -486,41 +466,139 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::str
       error = "--png is not available with --symmetry";
       return false;
     }
-    if (commandLine.Output.empty())
+  }
+  else
+  {
+    if (!commandLine.Pipeline.Centering)
     {
-      error = "no output given: add -o OUT";
+      error = "--no-centering is for --symmetry only";
       return false;
     }
-    return true;
+    if (commandLine.Pipeline.Candidate >= commandLine.Pipeline.NumberOfCandidates)
+    {
+      error = "--candidate " + std::to_string(commandLine.Pipeline.Candidate) +
+        " names no candidate: there are " +
+        std::to_string(commandLine.Pipeline.NumberOfCandidates) + " (--candidates), numbered from 0";
+      return false;
+    }
+    if (positional.empty())
+    {
+      commandLine.Demo = true;
+      return true;
+    }
+    if (positional.size() != 2)
+    {
+      error = "expected two meshes, SOURCE and TARGET (see --help)";
+      return false;
+    }
+    commandLine.Source = positional[0];
+    commandLine.Target = positional[1];
   }
-  if (!commandLine.Pipeline.Centering)
-  {
-    error = "--no-centering is for --symmetry only";
-    return false;
-  }
-  if (commandLine.Pipeline.Candidate >= commandLine.Pipeline.NumberOfCandidates)
-  {
-    error = "--candidate " + std::to_string(commandLine.Pipeline.Candidate) +
-      " names no candidate: there are " + std::to_string(commandLine.Pipeline.NumberOfCandidates) +
-      " (--candidates), numbered from 0";
-    return false;
-  }
-  if (positional.empty())
-  {
-    commandLine.Demo = true;
-    return true;
-  }
-  if (positional.size() != 2)
-  {
-    error = "expected two meshes, SOURCE and TARGET (see --help)";
-    return false;
-  }
-  commandLine.Source = positional[0];
-  commandLine.Target = positional[1];
   if (commandLine.Output.empty())
   {
     error = "no output given: add -o OUT";
     return false;
   }
   return true;
+}
+}
+
+std::string UsageText()
+{
+  std::ostringstream text;
+  text << "usage: mobius-register [options] SOURCE TARGET -o OUT\n"
+          "       mobius-register [options] --symmetry MESH -o OUT\n"
+          "       mobius-register [options] --orbifold N MESH -o OUT [--cones I,J] [--covering]\n"
+          "       mobius-register [options]            (demo on CGAL's cow and a deformed copy)\n"
+          "\n"
+          "Dense correspondence between two closed genus-0 surface meshes by Moebius\n"
+          "registration (Baden, Crane & Kazhdan, SGP 2018): conformal map of each mesh onto the\n"
+          "sphere, canonical centering, rotational alignment by correlation over SO(3), and a\n"
+          "point-to-point map. Meshes: .obj .off .ply .stl .vtp .vtk\n"
+          "\n";
+  // Options: the label, then the help from column 25 (or two spaces after a longer label).
+  const size_t column = 23;
+  for (const auto& option : Options())
+  {
+    if (option.Names.empty())
+    {
+      text << option.Label << "\n";
+      continue;
+    }
+    if (option.Label.empty())
+    {
+      continue; // listed with another row (--version with -h/--help)
+    }
+    text << "  " << option.Label;
+    std::istringstream help(option.Help);
+    std::string line;
+    for (bool first = true; std::getline(help, line); first = false)
+    {
+      if (first)
+      {
+        text << std::string(option.Label.size() + 2 <= column ? column - option.Label.size() : 2, ' ');
+      }
+      else
+      {
+        text << "\n" << std::string(column + 2, ' ');
+      }
+      text << line;
+    }
+    text << "\n";
+  }
+  text << "\n"
+          "Exit status: 0 on success; 1 if a mesh cannot be read or mapped (a degenerate map\n"
+          "included, unless --allow-poor-maps), or an output cannot be written (an existing\n"
+          "file without --force included); 2 for usage errors (unknown options, values out\n"
+          "of range, wrong number of meshes, no -o).\n";
+  return text.str();
+}
+
+bool ParsePipelineOption(
+  int argc, char* argv[], int& i, PipelineOptions& pipeline, bool& recognized, std::string& error)
+{
+  const Option* option = FindOption(argv[i]);
+  recognized = option && option->Pipeline;
+  if (!recognized)
+  {
+    return true;
+  }
+  CommandLine commandLine;
+  commandLine.Pipeline = pipeline;
+  if (!ApplyOption(*option, argc, argv, i, commandLine, error))
+  {
+    return false;
+  }
+  pipeline = commandLine.Pipeline;
+  return true;
+}
+
+bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error)
+{
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string argument = argv[i];
+    if (const Option* option = FindOption(argument))
+    {
+      if (!ApplyOption(*option, argc, argv, i, commandLine, error))
+      {
+        return false;
+      }
+    }
+    else if (argument.size() > 1 && argument[0] == '-')
+    {
+      error = "unknown option " + argument + " (see --help)";
+      return false;
+    }
+    else
+    {
+      positional.push_back(argument);
+    }
+  }
+  if (commandLine.Help || commandLine.Version)
+  {
+    return true;
+  }
+  return CheckCombination(commandLine, positional, error);
 }

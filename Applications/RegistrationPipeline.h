@@ -1,92 +1,30 @@
-// The whole registration job on two meshes, as the command-line program and the benchmark
-// run it: conformal map and centering of each mesh, rotational alignment, dense
-// correspondence, and its spectral refinement. Times each stage, reports progress, and turns the filters' error
-// messages into one message naming the input they concern.
+// The registration job as mobius-register and mobius-score run it: the module's one
+// pipeline (MobiusPipeline.h), with its messages in the command line's words (--fill-holes
+// where the filters say FillHoles).
 #ifndef RegistrationPipeline_h
 #define RegistrationPipeline_h
 
-#include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
+#include "MobiusPipeline.h"
+#include "RegistrationParameters.h"
 
-#include <functional>
 #include <string>
-#include <vector>
 
-struct PipelineOptions
-{
-  // vtkSphericalConformalMap
-  int FlowIterations = 100;
-  double FlowTolerance = 1e-4;
-  bool CenterBetweenSteps = true;
-  bool FillHoles = false;
-  bool KeepLargestComponent = false;
-  // false: a degenerate conformal map (DegenerateMap in its field data) is an error
-  bool AllowPoorMaps = false;
-  // vtkMobiusCenter
-  double CenteringTolerance = 1e-10;
-  // Highest spherical-harmonic degree centered against, for both meshes of a registration:
-  // 1 the paper's Möbius centering; 2..8 its generalized centering (§5, Figure 5).
-  int CenteringDegree = 1;
-  bool Centering = true; // symmetry detection only: false for the uncentered comparison
-  // vtkSO3Register
-  int Resolution = 256;
-  double SmoothingTime = 5e-4;
-  int TransformMode = 0; // 0 rotations, 1 reflections, 2 both
-  int NumberOfCandidates = 4;
-  // vtkDenseCorrespondence / vtkCorrespondenceRefinement
-  int OutputGeometry = 0; // 0 target surface, 1 source surface
-  bool Refine = true;     // spectral refinement of the Möbius map (false: the paper's map)
-  int BasisSize = 80;
-  bool GeometricPolish = true; // the refinement's geometric polish (--no-polish: off)
-  int Candidate = -1; // the refinement's candidate to keep (--candidate; -1: it chooses)
-  // Threads of every threaded stage (0: automatic, one per core of the CPU affinity mask,
-  // at most VTK_SMP_MAX_THREADS); the results do not depend on it.
-  int NumberOfThreads = 0;
-};
+// The job's options and their defaults: the core's, one place for every interface.
+using PipelineOptions = mobius::RegistrationParameters;
 
-struct StageTiming
-{
-  std::string Name;
-  double Seconds = 0;
-};
-
-struct PipelineResult
-{
-  vtkSmartPointer<vtkPolyData> SourceMap, TargetMap;           // conformal maps
-  vtkSmartPointer<vtkPolyData> SourceCentered, TargetCentered; // centered maps
-  vtkSmartPointer<vtkPolyData> Aligned;                        // source moved by vtkSO3Register
-  vtkSmartPointer<vtkPolyData> MobiusCorrespondence; // vtkDenseCorrespondence output
-  vtkSmartPointer<vtkPolyData> Correspondence; // the final map: refined, or the Möbius one
-  std::vector<StageTiming> Stages;
-  /// The whole job's wall time, 0 if not measured: less than the sum of Stages, since
-  /// some stages run side by side.
-  double WallSeconds = 0;
-  std::vector<std::string> Warnings;
-};
-
-/// Called with a stage name and its progress in [0, 1].
-using StageProgress = std::function<void(const std::string& stage, double fraction)>;
-
-/// Runs the job. On failure returns false and sets `error` to one line naming what failed
-/// (with `sourceName` / `targetName` for the stage that concerns one input).
+/// RunRegistrationPipeline, its messages in the command line's words.
 bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string& sourceName,
   const std::string& targetName, const PipelineOptions& options, PipelineResult& result,
   std::string& error, const StageProgress& progress = {});
 
-/// Bilateral symmetry of one mesh (vtkSymmetryDetection on its conformal map): the map in
-/// result.SourceMap, the symmetric map and the measures in result.Correspondence.
+/// RunSymmetryPipeline, its messages in the command line's words.
 bool RunSymmetryDetection(vtkPolyData* mesh, const std::string& name,
   const PipelineOptions& options, PipelineResult& result, std::string& error,
   const StageProgress& progress = {});
 
-/// Spherical orbifold map of one mesh (vtkSphericalOrbifoldMap on its conformal map, cones
-/// named by file vertex numbers, -1 -1 for automatic ones): the map in result.SourceMap, the
-/// orbifold map (one copy, or the covering) in result.Correspondence.
+/// RunOrbifoldPipeline, its messages in the command line's words.
 bool RunOrbifoldMap(vtkPolyData* mesh, const std::string& name, const PipelineOptions& options,
   int copies, const long long cones[2], bool covering, PipelineResult& result, std::string& error,
   const StageProgress& progress = {});
-
-/// Value of component `component` of field-data array `name`, NaN if absent.
-double FieldValue(vtkPolyData* data, const char* name, int component = 0);
 
 #endif

@@ -1,5 +1,6 @@
 #include "vtkCorrespondenceRefinement.h"
 
+#include "RegistrationParameters.h"
 #include "CandidateChoice.h"
 #include "CotangentLaplacian.h"
 #include "EdgeStretch.h"
@@ -68,7 +69,7 @@ std::string ExtractMapInput(vtkPolyData* input, int basisSize, MapInput& map)
     // way, so that a stored basis has the same fingerprint.
     mobius::vtk::NormalizeSurfaceScale(map.Surface);
   }
-  if (error.empty() && map.Sphere.rows() < 2 * basisSize)
+  if (error.empty() && !mobius::RefinementApplies(map.Sphere.rows(), basisSize))
   {
     std::ostringstream message;
     message << "it has " << map.Sphere.rows() << " points, fewer than twice the BasisSize ("
@@ -201,6 +202,20 @@ void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector
 vtkCorrespondenceRefinement::vtkCorrespondenceRefinement()
 {
   this->SetNumberOfInputPorts(2);
+  const mobius::RegistrationParameters defaults;
+  this->BasisSize = defaults.BasisSize;
+  this->StartBasisSize = defaults.StartBasisSize;
+  this->ScreeningBasisSize = defaults.ScreeningBasisSize;
+  this->GeometricPolish = defaults.GeometricPolish;
+  this->Candidate = defaults.Candidate;
+  this->OutputGeometry = defaults.OutputGeometry;
+  this->NumberOfThreads = defaults.NumberOfThreads;
+}
+
+//------------------------------------------------------------------------------
+bool vtkCorrespondenceRefinement::CanRefine(vtkIdType numberOfPoints, int basisSize)
+{
+  return mobius::RefinementApplies(numberOfPoints, basisSize);
 }
 
 //------------------------------------------------------------------------------
@@ -330,7 +345,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     mobius::ZoomOutParameters parameters;
     parameters.StartSize = this->StartBasisSize;
     parameters.Growth = this->BasisGrowth;
-    parameters.FinalSize = std::min(this->ScreeningBasisSize, this->BasisSize);
+    parameters.FinalSize = mobius::ClampToBasisSize(this->ScreeningBasisSize, this->BasisSize);
     parameters.FullResolutionIterations = this->FullResolutionIterations;
     parameters.NumberOfThreads = threads;
 

@@ -112,6 +112,13 @@ public:
   vtkGetMacro(BasisSize, int);
   ///@}
 
+  /**
+   * Whether a map of `numberOfPoints` points (the smaller of the two) can be refined with
+   * `basisSize` eigenfunctions: it needs at least twice as many points. On a smaller one the
+   * Möbius map (vtkDenseCorrespondence) is the answer.
+   */
+  static bool CanRefine(vtkIdType numberOfPoints, int basisSize);
+
   ///@{
   /**
    * Basis size of the first ZoomOut iteration (default 4), and the fraction by which the
@@ -268,21 +275,22 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
-  int BasisSize = 80;
-  int StartBasisSize = 4;
+  // Defaults: mobius::RegistrationParameters (the constructor).
+  int BasisSize;
+  int StartBasisSize;
   double BasisGrowth = 0.15;
-  int ScreeningBasisSize = 30;
+  int ScreeningBasisSize;
   int NumberOfSamples = 1000;
   int FullResolutionIterations = 2;
   bool SearchCandidates = true;
   bool RepairOrientation = true;
   double ConsistentMassShare = 0.0;
-  bool GeometricPolish = true;
+  bool GeometricPolish;
   double SphereAnchorWeight = 2.0;
   int CandidateCriterion = CURVATURE;
-  int Candidate = -1;
-  int OutputGeometry = TARGET;
-  int NumberOfThreads = 0;
+  int Candidate;
+  int OutputGeometry;
+  int NumberOfThreads;
 
 private:
   vtkCorrespondenceRefinement(const vtkCorrespondenceRefinement&) = delete;

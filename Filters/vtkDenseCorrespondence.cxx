@@ -1,5 +1,6 @@
 #include "vtkDenseCorrespondence.h"
 
+#include "RegistrationParameters.h"
 #include "ParallelFor.h"
 #include "SphericalPointLocator.h"
 #include "vtkCorrespondenceOutput.h"
@@ -23,6 +24,9 @@ vtkStandardNewMacro(vtkDenseCorrespondence);
 vtkDenseCorrespondence::vtkDenseCorrespondence()
 {
   this->SetNumberOfInputPorts(2);
+  const mobius::RegistrationParameters defaults;
+  this->OutputGeometry = defaults.OutputGeometry;
+  this->NumberOfThreads = defaults.NumberOfThreads;
 }
 
 //------------------------------------------------------------------------------

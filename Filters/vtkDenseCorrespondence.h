@@ -117,9 +117,10 @@ protected:
   // The work of RequestData, which turns an exception thrown here into an error.
   int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
-  int OutputGeometry = TARGET;
+  // Defaults: mobius::RegistrationParameters (the constructor).
+  int OutputGeometry;
   int Direction = SOURCE_TO_TARGET;
-  int NumberOfThreads = 0;
+  int NumberOfThreads;
 
 private:
   vtkDenseCorrespondence(const vtkDenseCorrespondence&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkMobiusCenter.h"
 
+#include "RegistrationParameters.h"
 #include "GeneralizedCentering.h"
 #include "MobiusCentering.h"
 #include "vtkDistributedInputs.h"
@@ -16,7 +17,13 @@
 vtkStandardNewMacro(vtkMobiusCenter);
 
 //------------------------------------------------------------------------------
-vtkMobiusCenter::vtkMobiusCenter() = default;
+vtkMobiusCenter::vtkMobiusCenter()
+{
+  const mobius::RegistrationParameters defaults;
+  this->Tolerance = defaults.CenteringTolerance;
+  this->Degree = defaults.CenteringDegree;
+  this->GeneralizedTolerance = defaults.GeneralizedCenteringTolerance;
+}
 
 //------------------------------------------------------------------------------
 int vtkMobiusCenter::RequestData(

@@ -111,10 +111,11 @@ protected:
   // The work of RequestData, which turns an exception thrown here into an error.
   int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
-  double Tolerance = 1e-10;
+  // Defaults: mobius::RegistrationParameters (the constructor).
+  double Tolerance;
   int MaximumNumberOfIterations = 100;
-  int Degree = 1;
-  double GeneralizedTolerance = 1e-10;
+  int Degree;
+  double GeneralizedTolerance;
   int GeneralizedMaximumNumberOfIterations = 200;
 
 private:

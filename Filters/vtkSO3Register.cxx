@@ -1,5 +1,6 @@
 #include "vtkSO3Register.h"
 
+#include "RegistrationParameters.h"
 #include "ParallelFor.h"
 #include "SO3Correlation.h"
 #include "ScaleFactorSignal.h"
@@ -65,6 +66,12 @@ void AddTupleArray(vtkFieldData* fieldData, const char* name, int components,
 vtkSO3Register::vtkSO3Register()
 {
   this->SetNumberOfInputPorts(2);
+  const mobius::RegistrationParameters defaults;
+  this->Resolution = defaults.Resolution;
+  this->SmoothingTime = defaults.SmoothingTime;
+  this->TransformMode = defaults.TransformMode;
+  this->NumberOfCandidates = defaults.NumberOfCandidates;
+  this->NumberOfThreads = defaults.NumberOfThreads;
 }
 
 //------------------------------------------------------------------------------

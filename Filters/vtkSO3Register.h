@@ -151,12 +151,13 @@ protected:
   // The work of RequestData, which turns an exception thrown here into an error.
   int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
-  int Resolution = 256;
-  double SmoothingTime = 5e-4;
+  // Defaults: mobius::RegistrationParameters (the constructor).
+  int Resolution;
+  double SmoothingTime;
   int ValueMode = 1;
-  int TransformMode = ROTATIONS;
-  int NumberOfCandidates = 4;
-  int NumberOfThreads = 0;
+  int TransformMode;
+  int NumberOfCandidates;
+  int NumberOfThreads;
 
 private:
   vtkSO3Register(const vtkSO3Register&) = delete;

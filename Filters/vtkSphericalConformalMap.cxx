@@ -1,5 +1,6 @@
 #include "vtkSphericalConformalMap.h"
 
+#include "RegistrationParameters.h"
 #include "ConformalMap.h"
 #include "MapDistortion.h"
 #include "MapVerdict.h"
@@ -149,7 +150,15 @@ void CopyAttributes(vtkDataSetAttributes* source, vtkDataSetAttributes* target,
 }
 
 //------------------------------------------------------------------------------
-vtkSphericalConformalMap::vtkSphericalConformalMap() = default;
+vtkSphericalConformalMap::vtkSphericalConformalMap()
+{
+  const mobius::RegistrationParameters defaults;
+  this->MaximumNumberOfIterations = defaults.FlowIterations;
+  this->ConvergenceTolerance = defaults.FlowTolerance;
+  this->CenterBetweenSteps = defaults.CenterBetweenSteps;
+  this->FillHoles = defaults.FillHoles;
+  this->KeepLargestComponent = defaults.KeepLargestComponent;
+}
 
 //------------------------------------------------------------------------------
 int vtkSphericalConformalMap::RequestData(

@@ -214,16 +214,17 @@ protected:
   int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double TimeStep = 0.4;
-  int MaximumNumberOfIterations = 100;
-  double ConvergenceTolerance = 1e-4;
-  vtkTypeBool CenterBetweenSteps = true;
+  // Defaults: mobius::RegistrationParameters (the constructor).
+  int MaximumNumberOfIterations;
+  double ConvergenceTolerance;
+  vtkTypeBool CenterBetweenSteps;
   vtkTypeBool LinearStart = true;
   vtkTypeBool ReuseFactorization = true;
   int IntrinsicDelaunay = INTRINSIC_DELAUNAY_AUTOMATIC;
   double IntrinsicDelaunayAngle = 1.0;
   int FlipRepairPasses = 100;
-  vtkTypeBool FillHoles = false;
-  vtkTypeBool KeepLargestComponent = false;
+  vtkTypeBool FillHoles;
+  vtkTypeBool KeepLargestComponent;
 
 private:
   vtkSphericalConformalMap(const vtkSphericalConformalMap&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkSymmetryDetection.h"
 
+#include "RegistrationParameters.h"
 #include "ParallelFor.h"
 #include "SymmetryMeasures.h"
 #include "VertexSnapping.h"
@@ -144,7 +145,18 @@ void AddTuples(vtkFieldData* fieldData, const char* name, int components,
 }
 
 //------------------------------------------------------------------------------
-vtkSymmetryDetection::vtkSymmetryDetection() = default;
+vtkSymmetryDetection::vtkSymmetryDetection()
+{
+  const mobius::RegistrationParameters defaults;
+  this->Centering = defaults.Centering;
+  this->Resolution = defaults.Resolution;
+  this->SmoothingTime = defaults.SmoothingTime;
+  this->NumberOfCandidates = defaults.NumberOfCandidates;
+  this->Refine = defaults.Refine;
+  this->BasisSize = defaults.BasisSize;
+  this->GeometricPolish = defaults.GeometricPolish;
+  this->NumberOfThreads = defaults.NumberOfThreads;
+}
 
 //------------------------------------------------------------------------------
 int vtkSymmetryDetection::RequestData(
@@ -246,7 +258,7 @@ int vtkSymmetryDetection::ComputeOutput(
 
   // The refinement samples BasisSize eigenfunctions on about twice as many vertices.
   const bool refine =
-    this->Refine && centered->GetNumberOfPoints() >= 2 * static_cast<vtkIdType>(this->BasisSize);
+    this->Refine && mobius::RefinementApplies(centered->GetNumberOfPoints(), this->BasisSize);
   if (this->Refine && !refine)
   {
     vtkWarningMacro(<< "Refinement skipped: the mesh has " << centered->GetNumberOfPoints()
@@ -262,7 +274,8 @@ int vtkSymmetryDetection::ComputeOutput(
     refinement->SetSourceData(reflected);
     refinement->SetTargetData(centered);
     refinement->SetBasisSize(this->BasisSize);
-    refinement->SetStartBasisSize(std::min(refinement->GetStartBasisSize(), this->BasisSize));
+    refinement->SetStartBasisSize(
+      mobius::ClampToBasisSize(refinement->GetStartBasisSize(), this->BasisSize));
     refinement->SetGeometricPolish(this->GeometricPolish);
     refinement->SetOutputGeometryToSource();
     refinement->SetCandidateCriterionToOrthogonality();

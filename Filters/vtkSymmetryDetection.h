@@ -161,15 +161,16 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
-  bool Centering = true;
-  int Resolution = 256;
-  double SmoothingTime = 5e-4;
-  int NumberOfCandidates = 4;
-  bool Refine = true;
-  int BasisSize = 80;
-  bool GeometricPolish = true;
+  // Defaults: mobius::RegistrationParameters (the constructor).
+  bool Centering;
+  int Resolution;
+  double SmoothingTime;
+  int NumberOfCandidates;
+  bool Refine;
+  int BasisSize;
+  bool GeometricPolish;
   double SnapTolerance = 1e-3;
-  int NumberOfThreads = 0;
+  int NumberOfThreads;
 
 private:
   vtkSymmetryDetection(const vtkSymmetryDetection&) = delete;

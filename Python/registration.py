@@ -5,12 +5,12 @@
     result.mapped_points          # (n, 3): each source vertex placed on the target
     result.transfer(target_values)  # per-target-vertex values carried to the source
 
-`register` runs the pipeline of the `mobius-register` program: a conformal map of each
-mesh onto the sphere (vtkSphericalConformalMap), its centering (vtkMobiusCenter), the
-rotation between them (vtkSO3Register) and the dense map, refined spectrally
-(vtkCorrespondenceRefinement) unless refine=False (vtkDenseCorrespondence, the paper's
-Möbius map). A filter's error, or a degenerate conformal map, raises RegistrationError
-with the filter's message.
+`register` runs vtkMobiusRegistration, the pipeline of the `mobius-register` program: a
+conformal map of each mesh onto the sphere (vtkSphericalConformalMap), its centering
+(vtkMobiusCenter), the rotation between them (vtkSO3Register) and the dense map, refined
+spectrally (vtkCorrespondenceRefinement) unless refine=False (vtkDenseCorrespondence, the
+paper's Möbius map). A stage's error, or a degenerate conformal map, raises
+RegistrationError with the stage's message; its warnings are Python warnings.
 """
 import os
 import warnings
@@ -21,29 +21,42 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 from .vtkMobiusRegistrationFilters import (
-    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register,
-    vtkSphericalConformalMap, vtkSurfaceMeshReader)
+    vtkCorrespondenceRefinement, vtkMobiusRegistration, vtkSO3Register, vtkSphericalConformalMap,
+    vtkSurfaceMeshReader)
 
 __all__ = ["register", "Registration", "RegistrationError"]
 
-# The options and their defaults: the same as mobius-register's.
-DEFAULT_OPTIONS = {
-    "refine": True,               # spectral refinement (False: the Möbius map alone)
-    "basis_size": 80,             # eigenfunctions of the refinement
-    "polish": True,               # the refinement's geometric polish (mobius-register --no-polish: False)
-    "resolution": 256,            # scale-factor grid of the SO(3) correlation (even)
-    "smoothing": 0.0005,          # heat-kernel smoothing time of the scale factors
-    "transform": "rotation",      # rotation | reflection | both
-    "candidates": 4,              # correlation peaks the refinement starts from
-    "candidate": None,            # the refinement's candidate to keep (mobius-register --candidate); None: it chooses
-    "iterations": 100,            # maximum conformal flow steps
-    "tolerance": 1e-4,            # conformal flow convergence tolerance
-    "fill_holes": False,          # close holes instead of rejecting open meshes
-    "keep_largest_component": False,
-    "allow_poor_maps": False,     # accept degenerate conformal maps instead of raising
-    "threads": 0,                 # threads per threaded filter (0: automatic); same results
-}
 _TRANSFORM_MODES = {"rotation": 0, "reflection": 1, "both": 2}
+
+
+def _default_options():
+    """The options and their defaults, read from default-constructed filters (whose defaults
+    are the core's, as mobius-register's are)."""
+    conformal, registration = vtkSphericalConformalMap(), vtkSO3Register()
+    refinement = vtkCorrespondenceRefinement()
+    transforms = {mode: name for name, mode in _TRANSFORM_MODES.items()}
+    candidate = refinement.GetCandidate()
+    return {
+        "refine": True,  # spectral refinement (False: the Möbius map alone)
+        "basis_size": refinement.GetBasisSize(),  # eigenfunctions of the refinement
+        "polish": bool(refinement.GetGeometricPolish()),  # the refinement's geometric polish
+        "resolution": registration.GetResolution(),  # scale-factor grid of the SO(3) correlation (even)
+        "smoothing": registration.GetSmoothingTime(),  # heat-kernel smoothing time of the scale factors
+        "transform": transforms[registration.GetTransformMode()],  # rotation | reflection | both
+        "candidates": registration.GetNumberOfCandidates(),  # correlation peaks the refinement starts from
+        # the refinement's candidate to keep (mobius-register --candidate); None: it chooses
+        "candidate": None if candidate < 0 else candidate,
+        "iterations": conformal.GetMaximumNumberOfIterations(),  # maximum conformal flow steps
+        "tolerance": conformal.GetConvergenceTolerance(),  # conformal flow convergence tolerance
+        "fill_holes": bool(conformal.GetFillHoles()),  # close holes instead of rejecting open meshes
+        "keep_largest_component": bool(conformal.GetKeepLargestComponent()),
+        "allow_poor_maps": False,  # accept degenerate conformal maps instead of raising
+        "threads": registration.GetNumberOfThreads(),  # threads per threaded filter (0: automatic); same results
+    }
+
+
+# The options and their defaults: the same as mobius-register's.
+DEFAULT_OPTIONS = _default_options()
 
 
 class RegistrationError(RuntimeError):
@@ -55,9 +68,11 @@ class _Errors:
 
     def __init__(self):
         self.messages = []
+        self.warnings = []
 
     def watch(self, algorithm):
         algorithm.AddObserver(vtkCommand.ErrorEvent, self._record)
+        algorithm.AddObserver(vtkCommand.WarningEvent, self._record_warning)
         # The executive's "Algorithm ... returned failure" only repeats the filter's message.
         algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda obj, event: None)
         return algorithm
@@ -66,6 +81,15 @@ class _Errors:
         text = str(message).split("): ", 1)[-1].strip() if message else "error"
         self.messages.append(f"{obj.GetClassName()}: {text}")
     _record.CallDataType = "string0"
+
+    def _record_warning(self, obj, event, message=None):
+        self.warnings.append(str(message).split("): ", 1)[-1].strip() if message else "warning")
+    _record_warning.CallDataType = "string0"
+
+    def warn(self):
+        for message in self.warnings:
+            warnings.warn(message, stacklevel=3)
+        self.warnings = []
 
     def raise_if_any(self, what):
         if self.messages:
@@ -118,30 +142,9 @@ def _field_values(polydata):
     return fields
 
 
-def _centered_map(polydata, name, options, errors):
-    # The filters give an empty output for an empty input (VTK's convention), not an error.
-    if polydata.GetNumberOfPoints() == 0:
-        raise RegistrationError(f"{name}: the mesh has no points")
-    conformal = errors.watch(vtkSphericalConformalMap())
-    conformal.SetInputData(polydata)
-    conformal.SetMaximumNumberOfIterations(int(options["iterations"]))
-    conformal.SetConvergenceTolerance(float(options["tolerance"]))
-    conformal.SetFillHoles(bool(options["fill_holes"]))
-    conformal.SetKeepLargestComponent(bool(options["keep_largest_component"]))
-    center = errors.watch(vtkMobiusCenter())
-    center.SetInputConnection(conformal.GetOutputPort())
-    center.Update()
-    errors.raise_if_any(name)
-    field = conformal.GetOutput().GetFieldData()
-    degenerate = field.GetArray("DegenerateMap")
-    if degenerate is not None and degenerate.GetValue(0) == 1 and not options["allow_poor_maps"]:
-        reason = field.GetAbstractArray("DegenerateMapReason")
-        raise RegistrationError(f"{name}: degenerate conformal map: "
-                                f"{reason.GetValue(0) if reason is not None else 'unknown reason'}"
-                                " (allow_poor_maps=True accepts it)")
-    result = vtkPolyData()
-    result.DeepCopy(center.GetOutput())
-    return result, _field_values(conformal.GetOutput())
+# The stages' field data in vtkMobiusRegistration's output: "<stage>.<name>".
+_STAGE_PREFIXES = ("SourceMap.", "TargetMap.", "SourceCentering.", "TargetCentering.",
+                   "Registration.", "MobiusCorrespondence.")
 
 
 class Registration:
@@ -221,7 +224,7 @@ def register(source, target, **options):
     a (vertices, faces) pair of arrays ((n, 3) floats, (m, 3) vertex numbers). Both must be
     closed genus-0 triangle surfaces (see fill_holes, keep_largest_component).
 
-    Options (defaults as mobius-register's): refine=True, basis_size=80, polish=True (end the
+    Options (defaults as mobius-register's): refine=True, basis_size=80 (2 to 500), polish=True (end the
     refinement with its geometric polish; False as --no-polish), resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
     candidate=None (keep this candidate's refined map, 0..candidates-1, as --candidate, for a
@@ -251,53 +254,60 @@ def register(source, target, **options):
     threads = options["threads"]
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 0 <= threads <= 1024:
         raise ValueError(f"threads must be an integer from 0 to 1024, got {threads!r}")
+    # As mobius-register --basis-size (the filters would clamp it silently).
+    basis_size = options["basis_size"]
+    if isinstance(basis_size, bool) or not isinstance(basis_size, (int, np.integer)) or not 2 <= basis_size <= 500:
+        raise ValueError(f"basis_size must be an integer from 2 to 500, got {basis_size!r}")
 
     errors = _Errors()
     source_mesh, source_name = _as_polydata(source, "source", errors)
     target_mesh, target_name = _as_polydata(target, "target", errors)
-    source_map, source_fields = _centered_map(source_mesh, source_name, options, errors)
-    target_map, target_fields = _centered_map(target_mesh, target_name, options, errors)
+    # The filters give an empty output for an empty input (VTK's convention), not an error.
+    for mesh, name in ((source_mesh, source_name), (target_mesh, target_name)):
+        if mesh.GetNumberOfPoints() == 0:
+            raise RegistrationError(f"{name}: the mesh has no points")
 
-    registration = errors.watch(vtkSO3Register())
-    registration.SetSourceData(source_map)
-    registration.SetTargetData(target_map)
+    registration = errors.watch(vtkMobiusRegistration())
+    registration.SetSourceData(source_mesh)
+    registration.SetTargetData(target_mesh)
+    registration.SetSourceName(source_name)
+    registration.SetTargetName(target_name)
+    registration.SetMaximumNumberOfIterations(int(options["iterations"]))
+    registration.SetConvergenceTolerance(float(options["tolerance"]))
+    registration.SetFillHoles(bool(options["fill_holes"]))
+    registration.SetKeepLargestComponent(bool(options["keep_largest_component"]))
+    registration.SetAllowPoorMaps(bool(options["allow_poor_maps"]))
     registration.SetResolution(resolution)
     registration.SetSmoothingTime(float(options["smoothing"]))
     registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
     registration.SetNumberOfCandidates(int(options["candidates"]))
+    registration.SetRefine(bool(options["refine"]))
+    registration.SetBasisSize(int(basis_size))
+    registration.SetGeometricPolish(bool(options["polish"]))
+    registration.SetCandidate(-1 if candidate is None else int(candidate))
     registration.SetNumberOfThreads(int(threads))
-
-    basis_size = int(options["basis_size"])
-    refine = bool(options["refine"])
-    smallest = min(source_map.GetNumberOfPoints(), target_map.GetNumberOfPoints())
-    if refine and smallest < 2 * basis_size:
-        # As mobius-register: the refinement's eigenbasis needs twice as many vertices.
-        warnings.warn(f"meshes with fewer than {2 * basis_size} vertices (2 x basis_size): "
-                      "the spectral refinement is skipped, the Möbius map is returned")
-        refine = False
-    if refine:
-        correspondence = errors.watch(vtkCorrespondenceRefinement())
-        correspondence.SetBasisSize(basis_size)
-        correspondence.SetStartBasisSize(min(correspondence.GetStartBasisSize(), basis_size))
-        correspondence.SetScreeningBasisSize(min(correspondence.GetScreeningBasisSize(), basis_size))
-        correspondence.SetGeometricPolish(bool(options["polish"]))
-        correspondence.SetCandidate(-1 if candidate is None else int(candidate))
-    else:
-        correspondence = errors.watch(vtkDenseCorrespondence())
-    correspondence.SetNumberOfThreads(int(threads))
-    correspondence.SetSourceConnection(registration.GetOutputPort())
-    correspondence.SetTargetData(target_map)
-    correspondence.Update()
-    errors.raise_if_any(f"{source_name} -> {target_name}")
+    registration.Update()
+    errors.warn()
+    if errors.messages:
+        # One message, the pipeline's, naming the mesh; its hint in this function's words.
+        message = errors.messages[0].split(": ", 1)[-1]
+        raise RegistrationError(message.replace("set AllowPoorMaps to write the result anyway",
+                                                "allow_poor_maps=True accepts it"))
 
     output = vtkPolyData()
-    output.DeepCopy(correspondence.GetOutput())
-    fields = dict(_field_values(registration.GetOutput()), **_field_values(output))
+    output.DeepCopy(registration.GetOutput())
+    all_fields = _field_values(output)
+    fields = {key: value for key, value in all_fields.items() if not key.startswith(_STAGE_PREFIXES)}
+    # The rotational alignment's own figures (Rotation, RegistrationError, ...).
+    for key, value in all_fields.items():
+        if key.startswith("Registration."):
+            fields.setdefault(key[len("Registration."):], value)
     quality = {}
     for key in ("RegistrationError", "RefinementOrthogonalityResidual", "RefinementOrientationAgreement"):
         if key in fields:
             quality[key] = fields[key]
-    for side, side_fields in (("Source", source_fields), ("Target", target_fields)):
-        if "MeanQuasiConformalDistortion" in side_fields:
-            quality[side + "MeanQuasiConformalDistortion"] = side_fields["MeanQuasiConformalDistortion"]
+    for side in ("Source", "Target"):
+        key = side + "Map.MeanQuasiConformalDistortion"
+        if key in all_fields:
+            quality[side + "MeanQuasiConformalDistortion"] = all_fields[key]
     return Registration(output, target_mesh.GetNumberOfPoints(), quality, fields)

@@ -105,7 +105,7 @@ try:
     raise AssertionError("an open mesh was registered")
 except RegistrationError as error:
     print("open mesh:", error)
-    assert "source" in str(error) and "vtkSphericalConformalMap" in str(error), error
+    assert str(error).startswith("source: ") and "FillHoles" in str(error), error
 genus_two = os.path.join(mesh_dir, "eight.off")
 try:
     register(genus_two, hand, resolution=64, refine=False)
@@ -134,10 +134,25 @@ for bad_call, expected in ((lambda: register(hand, hand, resolutoin=64), TypeErr
     except expected:
         pass
 
-# Meshes too small for the refinement's basis: the Möbius map, with a warning.
+# Meshes too small for the refinement's basis (a 226-vertex sphere, fewer than 2 x 200
+# vertices): the Möbius map, with a warning; a basis size out of mobius-register's range
+# is refused.
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+sphere = vtkSphereSource()
+sphere.SetThetaResolution(16)
+sphere.SetPhiResolution(16)
+sphere.Update()
+assert sphere.GetOutput().GetNumberOfPoints() < 400
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
-    small = register(hand, hand, resolution=64, basis_size=1000)
-assert any("refinement is skipped" in str(w.message) for w in caught)
+    small = register(sphere.GetOutput(), sphere.GetOutput(), resolution=32, basis_size=200)
+assert any("refinement skipped" in str(w.message) for w in caught), [str(w.message) for w in caught]
 assert "RefinementOrthogonalityResidual" not in small.quality
+for bad in (1, 501, 2.5, True):
+    try:
+        register(hand, hand, basis_size=bad)
+    except ValueError as error:
+        assert "basis_size" in str(error)
+    else:
+        raise AssertionError(f"basis_size={bad!r} accepted")
 print("register() checks passed")

@@ -23,8 +23,9 @@ struct GeneralizedCenteringParameters
 {
   /// Highest spherical-harmonic degree L (>= 1) of the functions to center against.
   int Degree = 2;
-  /// Stop when |mu| <= Tolerance (areas normalized to sum 1).
-  double Tolerance = 1e-8;
+  /// Stop when |mu| <= Tolerance (areas normalized to sum 1). 1e-10, as the Möbius
+  /// centering's: the registration has always centered to it (vtkMobiusCenter).
+  double Tolerance = 1e-10;
   int MaximumNumberOfIterations = 200;
   /// Largest angle (radians) a vertex may move in one advection step.
   double MaximumStepAngle = 0.05;

@@ -1,0 +1,82 @@
+// The parameters of the whole registration job and their defaults: the one place every
+// interface takes them from. The stage filters (their constructors), the command line
+// (PipelineOptions, its --help), the Python module (through the filters' getters) and the
+// ParaView plugin's XML (checked by TestParameterDefaults) all read these.
+//
+// Where a stage's own parameter struct holds a value, it is read from there, so that the
+// stage's default and the registration's cannot drift apart.
+#ifndef mobius_RegistrationParameters_h
+#define mobius_RegistrationParameters_h
+
+#include "ConformalMap.h"
+#include "GeneralizedCentering.h"
+#include "MeshTypes.h"
+#include "MobiusCentering.h"
+#include "SO3Correlation.h"
+#include "ScaleFactorSignal.h"
+#include "ZoomOut.h"
+
+namespace mobius
+{
+/// Allowed values of an integer parameter, both ends included.
+struct IntegerRange
+{
+  int Minimum;
+  int Maximum;
+  bool Contains(long long value) const { return value >= Minimum && value <= Maximum; }
+};
+
+/// The interfaces refuse (command line, Python) or clamp (VTK setters) values outside these.
+inline constexpr IntegerRange CenteringDegreeRange{ 1, 8 };
+inline constexpr IntegerRange BasisSizeRange{ 2, 500 };
+inline constexpr IntegerRange CandidateRange{ -1, 63 }; ///< -1: the refinement chooses
+inline constexpr IntegerRange ThreadCountRange{ 0, 1024 };
+/// The scale-factor grid is even and at least this; its upper end is the machine's memory.
+inline constexpr int MinimumResolution = 4;
+
+struct RegistrationParameters
+{
+  // Conformal map (vtkSphericalConformalMap)
+  int FlowIterations = ConformalMapParameters().MaximumNumberOfIterations;
+  double FlowTolerance = ConformalMapParameters().ConvergenceTolerance;
+  bool CenterBetweenSteps = ConformalMapParameters().MobiusCentering;
+  bool FillHoles = false;
+  bool KeepLargestComponent = false;
+  /// false: a degenerate conformal map (DegenerateMap in its field data) is an error
+  bool AllowPoorMaps = false;
+  // Centering (vtkMobiusCenter)
+  double CenteringTolerance = MobiusCenteringParameters().Tolerance;
+  double GeneralizedCenteringTolerance = GeneralizedCenteringParameters().Tolerance;
+  /// Highest spherical-harmonic degree centered against, for both meshes of a registration:
+  /// 1 the paper's Möbius centering; 2..8 its generalized centering (§5, Figure 5).
+  int CenteringDegree = 1;
+  bool Centering = true; ///< symmetry detection only: false for the uncentered comparison
+  // Rotational alignment (vtkSO3Register)
+  int Resolution = ScaleFactorSignalParameters().Resolution;
+  double SmoothingTime = ScaleFactorSignalParameters().SmoothingTime;
+  int TransformMode = static_cast<int>(SO3CorrelationOptions().Reflections); ///< 0 rotations, 1 reflections, 2 both
+  int NumberOfCandidates = SO3CorrelationOptions().NumberOfCandidates;
+  // Correspondence (vtkDenseCorrespondence, vtkCorrespondenceRefinement)
+  int OutputGeometry = 0; ///< 0 target surface, 1 source surface
+  bool Refine = true;     ///< spectral refinement of the Möbius map (false: the paper's map)
+  int BasisSize = ZoomOutParameters().FinalSize;
+  int StartBasisSize = ZoomOutParameters().StartSize;
+  /// Every candidate is refined up to this many functions; the best goes on to BasisSize.
+  int ScreeningBasisSize = 30;
+  bool GeometricPolish = true; ///< the refinement's geometric polish
+  int Candidate = -1;          ///< the refinement's candidate to keep (-1: it chooses)
+  /// Threads of every threaded stage (0: automatic, one per core of the CPU affinity mask,
+  /// at most VTK_SMP_MAX_THREADS); the results do not depend on it.
+  int NumberOfThreads = 0;
+};
+
+/// The spectral refinement compares BasisSize eigenfunctions and needs about twice as many
+/// vertices to sample them: on a smaller surface (the smaller of the two maps) the Möbius
+/// map is the answer.
+bool RefinementApplies(Index vertexCount, int basisSize);
+
+/// The basis sizes the refinement runs with: none above BasisSize.
+int ClampToBasisSize(int size, int basisSize);
+}
+
+#endif

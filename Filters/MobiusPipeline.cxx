@@ -1,0 +1,334 @@
+#include "MobiusPipeline.h"
+
+#include "ParallelFor.h"
+#include "RegistrationParameters.h"
+#include "vtkCorrespondenceRefinement.h"
+#include "vtkDenseCorrespondence.h"
+#include "vtkMobiusCenter.h"
+#include "vtkSO3Register.h"
+#include "vtkSphericalConformalMap.h"
+#include "vtkSphericalOrbifoldMap.h"
+#include "vtkSymmetryDetection.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkStringArray.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <utility>
+
+namespace
+{
+// Collects a filter's errors and warnings (instead of letting VTK print them) and forwards
+// its progress.
+class FilterMonitor
+{
+public:
+  FilterMonitor(vtkAlgorithm* filter, std::string stage, const StageProgress& progress)
+    : Stage(std::move(stage))
+    , Progress(progress)
+  {
+    this->Messages->SetClientData(this);
+    this->Messages->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
+      auto monitor = static_cast<FilterMonitor*>(self);
+      std::string text = data ? static_cast<const char*>(data) : "";
+      // VTK prefixes messages with the class and address; keep the sentence.
+      const auto colon = text.find("): ");
+      if (colon != std::string::npos)
+      {
+        text = text.substr(colon + 3);
+      }
+      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      {
+        text.pop_back();
+      }
+      if (event == vtkCommand::ErrorEvent)
+      {
+        if (monitor->Error.empty())
+        {
+          monitor->Error = text;
+        }
+      }
+      else
+      {
+        monitor->Warnings.push_back(text);
+      }
+    });
+    this->OnProgress->SetClientData(this);
+    this->OnProgress->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
+      auto monitor = static_cast<FilterMonitor*>(self);
+      if (monitor->Progress && data)
+      {
+        monitor->Progress(monitor->Stage, *static_cast<double*>(data));
+      }
+    });
+    filter->AddObserver(vtkCommand::ErrorEvent, this->Messages);
+    filter->AddObserver(vtkCommand::WarningEvent, this->Messages);
+    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Ignore);
+    filter->AddObserver(vtkCommand::ProgressEvent, this->OnProgress);
+  }
+
+  std::string Stage;
+  std::string Error;
+  std::vector<std::string> Warnings;
+
+private:
+  StageProgress Progress;
+  vtkNew<vtkCallbackCommand> Messages;
+  vtkNew<vtkCallbackCommand> OnProgress;
+  vtkNew<vtkCallbackCommand> Ignore; // the executive's "returned failure" repeats the error
+};
+
+// Runs `filter`, timing it as `stage`. False (with `error` set) if it failed.
+bool RunStage(vtkPolyDataAlgorithm* filter, const std::string& stage, const std::string& subject,
+  const StageProgress& progress, PipelineResult& result, vtkSmartPointer<vtkPolyData>& output,
+  std::string& error)
+{
+  FilterMonitor monitor(filter, stage, progress);
+  const auto start = std::chrono::steady_clock::now();
+  filter->Update();
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.Stages.push_back({ stage, seconds });
+  for (const auto& warning : monitor.Warnings)
+  {
+    result.Warnings.push_back(subject + ": " + warning);
+  }
+  output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(filter->GetOutput());
+  if (!monitor.Error.empty() || output->GetNumberOfPoints() == 0)
+  {
+    error = subject + ": " + (monitor.Error.empty() ? stage + " produced no output" : monitor.Error);
+    return false;
+  }
+  return true;
+}
+
+// The conformal map stage of both jobs; a degenerate map is an error unless AllowPoorMaps.
+bool MapToSphere(vtkPolyData* mesh, const std::string& name, const std::string& stage,
+  const mobius::RegistrationParameters& options, const StageProgress& progress,
+  PipelineResult& result, vtkSmartPointer<vtkPolyData>& map, std::string& error)
+{
+  vtkNew<vtkSphericalConformalMap> conformal;
+  conformal->SetInputData(mesh);
+  conformal->SetMaximumNumberOfIterations(options.FlowIterations);
+  conformal->SetConvergenceTolerance(options.FlowTolerance);
+  conformal->SetCenterBetweenSteps(options.CenterBetweenSteps);
+  conformal->SetFillHoles(options.FillHoles);
+  conformal->SetKeepLargestComponent(options.KeepLargestComponent);
+  if (!RunStage(conformal, stage, name, progress, result, map, error))
+  {
+    return false;
+  }
+  // A degenerate map still has the right shape and would go through every later stage: a
+  // wrong correspondence would be written as if it were a result.
+  if (!options.AllowPoorMaps && FieldValue(map, "DegenerateMap") == 1)
+  {
+    auto reason =
+      vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
+    error = name + ": the conformal map is degenerate: " +
+      (reason && reason->GetNumberOfValues() > 0 ? reason->GetValue(0) : std::string("see its field data")) +
+      "; set AllowPoorMaps to write the result anyway";
+    return false;
+  }
+  return true;
+}
+}
+
+double FieldValue(vtkPolyData* data, const char* name, int component)
+{
+  vtkDataArray* array = data ? data->GetFieldData()->GetArray(name) : nullptr;
+  return array && component < array->GetNumberOfComponents() ? array->GetComponent(0, component)
+                                                             : std::nan("");
+}
+
+bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
+  const std::string& sourceName, const std::string& targetName,
+  const mobius::RegistrationParameters& options, PipelineResult& result, std::string& error,
+  const StageProgress& progress)
+{
+  const auto started = std::chrono::steady_clock::now();
+  vtkPolyData* inputs[2] = { source, target };
+  const std::string names[2] = { sourceName, targetName };
+  vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
+  vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
+  const char* which[2] = { "source", "target" };
+  const int threads = mobius::ResolveThreadCount(options.NumberOfThreads);
+  // The two meshes' conformal maps and centerings are independent, and the conformal flow
+  // runs on one core: with two threads or more the target's runs beside the source's (on
+  // the man, 17,495 vertices: 0.5 s of a ~3 s job). Each job times and reports into its own
+  // result; they are merged in the order source, target.
+  std::mutex progressLock;
+  const StageProgress sharedProgress = [&](const std::string& stage, double fraction) {
+    if (progress)
+    {
+      std::lock_guard<std::mutex> guard(progressLock);
+      progress(stage, fraction);
+    }
+  };
+  PipelineResult parts[2];
+  std::string errors[2];
+  auto mapAndCenter = [&](int k) {
+    if (!MapToSphere(inputs[k], names[k], std::string("conformal map (") + which[k] + ")",
+          options, sharedProgress, parts[k], *maps[k], errors[k]))
+    {
+      return false;
+    }
+    vtkNew<vtkMobiusCenter> center;
+    center->SetInputData(*maps[k]);
+    center->SetTolerance(options.CenteringTolerance);
+    center->SetDegree(options.CenteringDegree);
+    return RunStage(center, std::string("centering (") + which[k] + ")", names[k],
+      sharedProgress, parts[k], *centered[k], errors[k]);
+  };
+  // One mesh given as both inputs is mapped twice in turn: VTK builds a mesh's cell
+  // structures lazily on first read, so two filters may not read it at once.
+  const bool sideBySide = source != target;
+  bool ok[2] = { false, false };
+  // In turn (one thread) the target is not mapped after the source failed. ParallelFor
+  // carries an exception of either job here once both are done.
+  mobius::ParallelFor(2, sideBySide ? threads : 1, [&](int k, int) {
+    if (k == 0 || sideBySide || ok[0])
+    {
+      ok[k] = mapAndCenter(k);
+    }
+  });
+  for (int k = 0; k < 2; ++k)
+  {
+    result.Stages.insert(result.Stages.end(), parts[k].Stages.begin(), parts[k].Stages.end());
+    result.Warnings.insert(result.Warnings.end(), parts[k].Warnings.begin(), parts[k].Warnings.end());
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!ok[k])
+    {
+      error = errors[k];
+      return false;
+    }
+  }
+
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceData(result.SourceCentered);
+  registration->SetTargetData(result.TargetCentered);
+  registration->SetResolution(options.Resolution);
+  registration->SetSmoothingTime(options.SmoothingTime);
+  registration->SetTransformMode(options.TransformMode);
+  registration->SetNumberOfCandidates(options.NumberOfCandidates);
+  registration->SetNumberOfThreads(threads);
+  if (!RunStage(registration, "rotational alignment", sourceName + " -> " + targetName, progress,
+        result, result.Aligned, error))
+  {
+    return false;
+  }
+
+  vtkNew<vtkDenseCorrespondence> correspondence;
+  correspondence->SetSourceData(result.Aligned);
+  correspondence->SetTargetData(result.TargetCentered);
+  correspondence->SetOutputGeometry(options.OutputGeometry);
+  correspondence->SetNumberOfThreads(threads);
+  if (!RunStage(correspondence, "dense correspondence", sourceName + " -> " + targetName,
+        progress, result, result.MobiusCorrespondence, error))
+  {
+    return false;
+  }
+  result.Correspondence = result.MobiusCorrespondence;
+  auto finish = [&](bool succeeded) {
+    result.WallSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return succeeded;
+  };
+  if (!options.Refine)
+  {
+    return finish(true);
+  }
+  // The refinement's spectral search compares BasisSize eigenfunctions and needs about
+  // twice as many vertices to sample them: on a smaller mesh the Möbius map is the answer.
+  const vtkIdType smallest = std::min(
+    result.Aligned->GetNumberOfPoints(), result.TargetCentered->GetNumberOfPoints());
+  if (!mobius::RefinementApplies(smallest, options.BasisSize))
+  {
+    result.Warnings.push_back(sourceName + " -> " + targetName + ": refinement skipped: a map has " +
+      std::to_string(smallest) + " vertices, fewer than twice the basis size " +
+      std::to_string(options.BasisSize) + " (BasisSize); the result is the Moebius map");
+    return finish(true);
+  }
+  vtkNew<vtkCorrespondenceRefinement> refinement;
+  refinement->SetSourceData(result.Aligned);
+  refinement->SetTargetData(result.TargetCentered);
+  refinement->SetOutputGeometry(options.OutputGeometry);
+  refinement->SetBasisSize(options.BasisSize);
+  refinement->SetStartBasisSize(
+    mobius::ClampToBasisSize(refinement->GetStartBasisSize(), options.BasisSize));
+  refinement->SetGeometricPolish(options.GeometricPolish);
+  refinement->SetCandidate(options.Candidate);
+  refinement->SetNumberOfThreads(threads);
+  return finish(RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress,
+    result, result.Correspondence, error));
+}
+
+bool RunSymmetryPipeline(vtkPolyData* mesh, const std::string& name,
+  const mobius::RegistrationParameters& options, PipelineResult& result, std::string& error,
+  const StageProgress& progress)
+{
+  // The uncentered comparison leaves out the centering between flow steps too.
+  mobius::RegistrationParameters mapOptions = options;
+  mapOptions.CenterBetweenSteps = options.CenterBetweenSteps && options.Centering;
+  if (!MapToSphere(mesh, name, "conformal map", mapOptions, progress, result, result.SourceMap, error))
+  {
+    return false;
+  }
+  if (options.Refine &&
+    !mobius::RefinementApplies(result.SourceMap->GetNumberOfPoints(), options.BasisSize))
+  {
+    result.Warnings.push_back(name + ": refinement skipped: the map has " +
+      std::to_string(result.SourceMap->GetNumberOfPoints()) +
+      " vertices, fewer than twice the basis size " + std::to_string(options.BasisSize) +
+      " (BasisSize); the symmetric map is the Moebius map");
+  }
+  vtkNew<vtkSymmetryDetection> detection;
+  detection->SetInputData(result.SourceMap);
+  detection->SetCentering(options.Centering);
+  detection->SetResolution(options.Resolution);
+  detection->SetSmoothingTime(options.SmoothingTime);
+  detection->SetNumberOfCandidates(options.NumberOfCandidates);
+  detection->SetRefine(options.Refine);
+  detection->SetBasisSize(options.BasisSize);
+  detection->SetGeometricPolish(options.GeometricPolish);
+  detection->SetNumberOfThreads(options.NumberOfThreads);
+  const size_t warnings = result.Warnings.size();
+  if (!RunStage(detection, "symmetry detection", name, progress, result, result.Correspondence, error))
+  {
+    return false;
+  }
+  // The filter's own "refinement skipped" warning repeats the one above.
+  result.Warnings.erase(std::remove_if(result.Warnings.begin() + warnings, result.Warnings.end(),
+                          [](const std::string& warning) {
+                            return warning.find("Refinement skipped") != std::string::npos;
+                          }),
+    result.Warnings.end());
+  return true;
+}
+
+bool RunOrbifoldPipeline(vtkPolyData* mesh, const std::string& name,
+  const mobius::RegistrationParameters& options, int copies, const long long cones[2],
+  bool covering, PipelineResult& result, std::string& error, const StageProgress& progress)
+{
+  if (!MapToSphere(mesh, name, "conformal map", options, progress, result, result.SourceMap, error))
+  {
+    return false;
+  }
+  vtkNew<vtkSphericalOrbifoldMap> orbifold;
+  orbifold->SetInputData(result.SourceMap); // cones: its InputPointId, the file's numbering
+  orbifold->SetNumberOfCopies(copies);
+  orbifold->SetConeIds(static_cast<vtkIdType>(cones[0]), static_cast<vtkIdType>(cones[1]));
+  orbifold->SetOutputCovering(covering);
+  return RunStage(orbifold, "orbifold map", name, progress, result, result.Correspondence, error);
+}

@@ -1,0 +1,221 @@
+#include "vtkMobiusRegistration.h"
+
+#include "MobiusPipeline.h"
+#include "RegistrationParameters.h"
+#include "vtkDistributedInputs.h"
+
+#include "vtkAbstractArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <thread>
+
+vtkStandardNewMacro(vtkMobiusRegistration);
+
+namespace
+{
+// Adds to `fields` the field arrays of `stage` that its input `before` did not have (a
+// stage passes its input's field data on), each named `prefix` + its name.
+void AddStageFields(vtkFieldData* fields, const std::string& prefix, vtkPolyData* stage,
+  vtkPolyData* before = nullptr)
+{
+  vtkFieldData* stageFields = stage ? stage->GetFieldData() : nullptr;
+  for (int a = 0; stageFields && a < stageFields->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = stageFields->GetAbstractArray(a);
+    if (!array || !array->GetName() ||
+      (before && before->GetFieldData()->GetAbstractArray(array->GetName())))
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> copy = vtkSmartPointer<vtkAbstractArray>::Take(array->NewInstance());
+    copy->DeepCopy(array);
+    copy->SetName((prefix + array->GetName()).c_str());
+    fields->AddArray(copy);
+  }
+}
+
+// The share of the job's progress before each stage, roughly its share of the time.
+double StageStart(const std::string& stage, double& length)
+{
+  if (stage == "rotational alignment")
+  {
+    length = 0.3;
+    return 0.3;
+  }
+  if (stage == "dense correspondence")
+  {
+    length = 0.1;
+    return 0.6;
+  }
+  length = 0.3; // the refinement
+  return 0.7;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkMobiusRegistration::vtkMobiusRegistration()
+{
+  this->SetNumberOfInputPorts(2);
+  const mobius::RegistrationParameters defaults;
+  this->FillHoles = defaults.FillHoles;
+  this->KeepLargestComponent = defaults.KeepLargestComponent;
+  this->AllowPoorMaps = defaults.AllowPoorMaps;
+  this->MaximumNumberOfIterations = defaults.FlowIterations;
+  this->ConvergenceTolerance = defaults.FlowTolerance;
+  this->CenterBetweenSteps = defaults.CenterBetweenSteps;
+  this->CenteringDegree = defaults.CenteringDegree;
+  this->Resolution = defaults.Resolution;
+  this->SmoothingTime = defaults.SmoothingTime;
+  this->TransformMode = defaults.TransformMode;
+  this->NumberOfCandidates = defaults.NumberOfCandidates;
+  this->Refine = defaults.Refine;
+  this->BasisSize = defaults.BasisSize;
+  this->GeometricPolish = defaults.GeometricPolish;
+  this->Candidate = defaults.Candidate;
+  this->OutputGeometry = defaults.OutputGeometry;
+  this->NumberOfThreads = defaults.NumberOfThreads;
+}
+
+//------------------------------------------------------------------------------
+void vtkMobiusRegistration::SetSourceName(const char* name)
+{
+  if (name && this->SourceName != name)
+  {
+    this->SourceName = name;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkMobiusRegistration::SetTargetName(const char* name)
+{
+  if (name && this->TargetName != name)
+  {
+    this->TargetName = name;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkMobiusRegistration::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMobiusRegistration::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // The whole meshes, also when ParaView splits them over ranks (the result then lives on
+  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
+  return mobius::vtk::RequestDataOnWholeInputs(
+    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
+      return this->ComputeOutput(request, wholeInputs, outputVector);
+    });
+}
+
+//------------------------------------------------------------------------------
+int vtkMobiusRegistration::ComputeOutput(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* source = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* target = vtkPolyData::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!source || !target || !output)
+  {
+    vtkErrorMacro(<< "Both a Source (port 0) and a Target (port 1) mesh are required.");
+    return 0;
+  }
+  mobius::RegistrationParameters options;
+  options.FillHoles = this->FillHoles;
+  options.KeepLargestComponent = this->KeepLargestComponent;
+  options.AllowPoorMaps = this->AllowPoorMaps;
+  options.FlowIterations = this->MaximumNumberOfIterations;
+  options.FlowTolerance = this->ConvergenceTolerance;
+  options.CenterBetweenSteps = this->CenterBetweenSteps;
+  options.CenteringDegree = this->CenteringDegree;
+  options.Resolution = this->Resolution;
+  options.SmoothingTime = this->SmoothingTime;
+  options.TransformMode = this->TransformMode;
+  options.NumberOfCandidates = this->NumberOfCandidates;
+  options.Refine = this->Refine;
+  options.BasisSize = this->BasisSize;
+  options.GeometricPolish = this->GeometricPolish;
+  options.Candidate = this->Candidate;
+  options.OutputGeometry = this->OutputGeometry;
+  options.NumberOfThreads = this->NumberOfThreads;
+
+  // Progress from this thread only: the two conformal maps may run on others, where VTK's
+  // observers (ParaView's progress bar) must not be called.
+  const std::thread::id caller = std::this_thread::get_id();
+  const StageProgress progress = [this, caller](const std::string& stage, double fraction) {
+    if (std::this_thread::get_id() != caller || stage.rfind("conformal map", 0) == 0 ||
+      stage.rfind("centering", 0) == 0)
+    {
+      return;
+    }
+    double length = 0;
+    const double start = StageStart(stage, length);
+    this->UpdateProgress(start + length * fraction);
+  };
+  PipelineResult result;
+  std::string error;
+  const bool succeeded = RunRegistrationPipeline(
+    source, target, this->SourceName, this->TargetName, options, result, error, progress);
+  for (const auto& warning : result.Warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  if (!succeeded)
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  output->ShallowCopy(result.Correspondence);
+  vtkNew<vtkFieldData> fields;
+  fields->ShallowCopy(result.Correspondence->GetFieldData());
+  AddStageFields(fields, "SourceMap.", result.SourceMap);
+  AddStageFields(fields, "TargetMap.", result.TargetMap);
+  AddStageFields(fields, "SourceCentering.", result.SourceCentered, result.SourceMap);
+  AddStageFields(fields, "TargetCentering.", result.TargetCentered, result.TargetMap);
+  AddStageFields(fields, "Registration.", result.Aligned, result.SourceCentered);
+  if (result.Correspondence != result.MobiusCorrespondence)
+  {
+    AddStageFields(fields, "MobiusCorrespondence.", result.MobiusCorrespondence, result.Aligned);
+  }
+  output->SetFieldData(fields);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkMobiusRegistration::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SourceName: " << this->SourceName << "\n";
+  os << indent << "TargetName: " << this->TargetName << "\n";
+  os << indent << "FillHoles: " << this->FillHoles << "\n";
+  os << indent << "KeepLargestComponent: " << this->KeepLargestComponent << "\n";
+  os << indent << "AllowPoorMaps: " << this->AllowPoorMaps << "\n";
+  os << indent << "MaximumNumberOfIterations: " << this->MaximumNumberOfIterations << "\n";
+  os << indent << "ConvergenceTolerance: " << this->ConvergenceTolerance << "\n";
+  os << indent << "CenterBetweenSteps: " << this->CenterBetweenSteps << "\n";
+  os << indent << "CenteringDegree: " << this->CenteringDegree << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
+  os << indent << "TransformMode: " << this->TransformMode << "\n";
+  os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "Refine: " << this->Refine << "\n";
+  os << indent << "BasisSize: " << this->BasisSize << "\n";
+  os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
+  os << indent << "Candidate: " << this->Candidate << "\n";
+  os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+}

@@ -1,0 +1,176 @@
+/**
+ * @class   vtkMobiusRegistration
+ * @brief   The whole Möbius registration of one mesh onto another, in one filter.
+ *
+ * Runs the pipeline mobius-register runs (MobiusPipeline.h): the repair and spherical
+ * conformal map of each mesh (vtkSphericalConformalMap), its centering (vtkMobiusCenter),
+ * the rotational alignment (vtkSO3Register), the dense map (vtkDenseCorrespondence) and its
+ * spectral refinement (vtkCorrespondenceRefinement, when Refine is on and both maps have
+ * at least 2 x BasisSize points). The stage filters stay for those who want the steps.
+ *
+ * Inputs: port 0 `Source`, port 1 `Target`: closed genus-0 triangle meshes (see FillHoles,
+ * KeepLargestComponent).
+ *
+ * Output: the correspondence, as the last stage gives it and mobius-register writes to
+ * OUT.vtp: the source's connectivity (points on the target surface, or the source surface
+ * with OutputGeometry SOURCE), point data `InputPointId`, `TargetCellId`,
+ * `TargetBarycentric`, `TargetInputPointIds`, `MappedPoints` and the target's point arrays
+ * transferred, and the last stage's field data. Besides, every stage's field data under
+ * its stage's name: `SourceMap.`, `TargetMap.` (conformal maps, e.g.
+ * `SourceMap.MeanQuasiConformalDistortion`), `SourceCentering.`, `TargetCentering.`,
+ * `Registration.` (e.g. `Registration.Rotation`) and, when refined,
+ * `MobiusCorrespondence.`.
+ *
+ * Errors: a mesh that cannot be mapped (the stage's message, naming the Source or the
+ * Target), a degenerate conformal map unless AllowPoorMaps. Warnings: the stages'.
+ *
+ * Defaults are the core's (mobius::RegistrationParameters), the same as mobius-register's
+ * and mobiusregistration.register()'s.
+ *
+ * @sa vtkSphericalConformalMap vtkMobiusCenter vtkSO3Register vtkDenseCorrespondence
+ * vtkCorrespondenceRefinement
+ */
+#ifndef vtkMobiusRegistration_h
+#define vtkMobiusRegistration_h
+
+#include "vtkMobiusRegistrationFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string> // For the names
+
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusRegistration : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkMobiusRegistration* New();
+  vtkTypeMacro(vtkMobiusRegistration, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The mesh mapped (port 0) and the mesh it is mapped onto (port 1). */
+  void SetSourceConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetTargetConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetSourceData(vtkDataObject* data) { this->SetInputData(0, data); }
+  void SetTargetData(vtkDataObject* data) { this->SetInputData(1, data); }
+  ///@}
+
+  ///@{
+  /** Names of the meshes in messages (default "Source", "Target"), e.g. their files. */
+  void SetSourceName(const char* name);
+  const char* GetSourceName() const { return this->SourceName.c_str(); }
+  void SetTargetName(const char* name);
+  const char* GetTargetName() const { return this->TargetName.c_str(); }
+  ///@}
+
+  ///@{
+  /** Repair: close holes, keep the largest component (vtkSphericalConformalMap). */
+  vtkSetMacro(FillHoles, bool);
+  vtkGetMacro(FillHoles, bool);
+  vtkBooleanMacro(FillHoles, bool);
+  vtkSetMacro(KeepLargestComponent, bool);
+  vtkGetMacro(KeepLargestComponent, bool);
+  vtkBooleanMacro(KeepLargestComponent, bool);
+  ///@}
+
+  ///@{
+  /** Go on with a degenerate conformal map (DegenerateMap) instead of failing. */
+  vtkSetMacro(AllowPoorMaps, bool);
+  vtkGetMacro(AllowPoorMaps, bool);
+  vtkBooleanMacro(AllowPoorMaps, bool);
+  ///@}
+
+  ///@{
+  /** Conformal map: flow steps, convergence tolerance, centering between steps. */
+  vtkSetClampMacro(MaximumNumberOfIterations, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfIterations, int);
+  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(ConvergenceTolerance, double);
+  vtkSetMacro(CenterBetweenSteps, bool);
+  vtkGetMacro(CenterBetweenSteps, bool);
+  vtkBooleanMacro(CenterBetweenSteps, bool);
+  ///@}
+
+  ///@{
+  /** Centering degree of both maps: 1 the Möbius centering, 2..8 generalized (vtkMobiusCenter). */
+  vtkSetClampMacro(CenteringDegree, int, 1, 8);
+  vtkGetMacro(CenteringDegree, int);
+  ///@}
+
+  ///@{
+  /**
+   * Rotational alignment (vtkSO3Register): grid size (even, >= 4), smoothing time,
+   * transforms searched (0 rotations, 1 reflections, 2 both), correlation peaks.
+   */
+  vtkSetMacro(Resolution, int);
+  vtkGetMacro(Resolution, int);
+  vtkSetClampMacro(SmoothingTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SmoothingTime, double);
+  vtkSetClampMacro(TransformMode, int, 0, 2);
+  vtkGetMacro(TransformMode, int);
+  vtkSetClampMacro(NumberOfCandidates, int, 1, 64);
+  vtkGetMacro(NumberOfCandidates, int);
+  ///@}
+
+  ///@{
+  /**
+   * Refinement (vtkCorrespondenceRefinement): on or off (the paper's Möbius map), basis
+   * size, geometric polish, and the candidate to keep (-1: it chooses).
+   */
+  vtkSetMacro(Refine, bool);
+  vtkGetMacro(Refine, bool);
+  vtkBooleanMacro(Refine, bool);
+  vtkSetClampMacro(BasisSize, int, 2, 500);
+  vtkGetMacro(BasisSize, int);
+  vtkSetMacro(GeometricPolish, bool);
+  vtkGetMacro(GeometricPolish, bool);
+  vtkBooleanMacro(GeometricPolish, bool);
+  vtkSetClampMacro(Candidate, int, -1, 63);
+  vtkGetMacro(Candidate, int);
+  ///@}
+
+  ///@{
+  /** Where the output's points are: 0 the target surface, 1 the source surface. */
+  vtkSetClampMacro(OutputGeometry, int, 0, 1);
+  vtkGetMacro(OutputGeometry, int);
+  ///@}
+
+  ///@{
+  /** Threads of each threaded stage (0: one per core); the result is the same for any. */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+protected:
+  vtkMobiusRegistration();
+  ~vtkMobiusRegistration() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  // Defaults: mobius::RegistrationParameters (the constructor).
+  std::string SourceName = "Source";
+  std::string TargetName = "Target";
+  bool FillHoles;
+  bool KeepLargestComponent;
+  bool AllowPoorMaps;
+  int MaximumNumberOfIterations;
+  double ConvergenceTolerance;
+  bool CenterBetweenSteps;
+  int CenteringDegree;
+  int Resolution;
+  double SmoothingTime;
+  int TransformMode;
+  int NumberOfCandidates;
+  bool Refine;
+  int BasisSize;
+  bool GeometricPolish;
+  int Candidate;
+  int OutputGeometry;
+  int NumberOfThreads;
+
+private:
+  vtkMobiusRegistration(const vtkMobiusRegistration&) = delete;
+  void operator=(const vtkMobiusRegistration&) = delete;
+};
+
+#endif

@@ -1,0 +1,170 @@
+// vtkMobiusRegistration against the stage filters chained by hand (conformal map and
+// centering of each mesh, vtkSO3Register, vtkCorrespondenceRefinement or
+// vtkDenseCorrespondence) on CGAL's cow and bull: the same map, bit for bit, and the
+// stages' field data under their stage names. Errors name the mesh by SourceName.
+#include "MobiusTestUtilities.h"
+#include "vtkCorrespondenceRefinement.h"
+#include "vtkDenseCorrespondence.h"
+#include "vtkMobiusCenter.h"
+#include "vtkMobiusRegistration.h"
+#include "vtkSO3Register.h"
+#include "vtkSphericalConformalMap.h"
+#include "vtkSurfaceMeshReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdList.h"
+
+#ifndef MOBIUS_MESH_DIR
+#error "TestMobiusRegistration needs CGAL's meshes (MOBIUS_MESH_DIR); CMake lists it only with them"
+#endif
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> Read(const char* path)
+{
+  vtkNew<vtkSurfaceMeshReader> reader;
+  reader->SetFileName(path);
+  reader->Update();
+  return reader->GetOutput();
+}
+
+// The arrays of `name` in both outputs hold the same values, bit for bit.
+int ExpectSameArray(vtkDataArray* a, vtkDataArray* b, const std::string& name)
+{
+  if (!a || !b || a->GetNumberOfTuples() != b->GetNumberOfTuples() ||
+    a->GetNumberOfComponents() != b->GetNumberOfComponents())
+  {
+    std::cerr << name << ": missing or of another shape\n";
+    return 1;
+  }
+  for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      if (a->GetComponent(t, c) != b->GetComponent(t, c))
+      {
+        std::cerr << name << ": differs at tuple " << t << "\n";
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
+
+// The filter's output and the hand-made chain's, with refinement or without.
+int CompareWithChain(vtkPolyData* source, vtkPolyData* target, bool refine)
+{
+  int failures = 0;
+  const int resolution = 64;
+  vtkNew<vtkMobiusRegistration> whole;
+  whole->SetSourceData(source);
+  whole->SetTargetData(target);
+  whole->SetResolution(resolution);
+  whole->SetRefine(refine);
+  {
+    mobius_test::MessageCatcher catcher(whole);
+    whole->Update();
+    if (!catcher.Error.empty() || whole->GetOutput()->GetNumberOfPoints() == 0)
+    {
+      std::cerr << "vtkMobiusRegistration failed: " << catcher.Error << std::endl;
+      return 1;
+    }
+  }
+
+  vtkNew<vtkSphericalConformalMap> sourceMap, targetMap;
+  sourceMap->SetInputData(source);
+  targetMap->SetInputData(target);
+  vtkNew<vtkMobiusCenter> sourceCentered, targetCentered;
+  sourceCentered->SetInputConnection(sourceMap->GetOutputPort());
+  targetCentered->SetInputConnection(targetMap->GetOutputPort());
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceConnection(sourceCentered->GetOutputPort());
+  registration->SetTargetConnection(targetCentered->GetOutputPort());
+  registration->SetResolution(resolution);
+  vtkSmartPointer<vtkPolyDataAlgorithm> last;
+  if (refine)
+  {
+    last = vtkSmartPointer<vtkCorrespondenceRefinement>::New();
+  }
+  else
+  {
+    last = vtkSmartPointer<vtkDenseCorrespondence>::New();
+  }
+  last->SetInputConnection(0, registration->GetOutputPort());
+  last->SetInputConnection(1, targetCentered->GetOutputPort());
+  last->Update();
+
+  vtkPolyData* a = whole->GetOutput();
+  vtkPolyData* b = last->GetOutput();
+  MOBIUS_EXPECT(a->GetNumberOfPoints() == source->GetNumberOfPoints());
+  MOBIUS_EXPECT(a->GetNumberOfPoints() == b->GetNumberOfPoints());
+  MOBIUS_EXPECT(a->GetNumberOfCells() == b->GetNumberOfCells());
+  if (!a->GetPoints() || !b->GetPoints())
+  {
+    std::cerr << "an output has no points" << std::endl;
+    return failures + 1;
+  }
+  for (const char* name : { "TargetCellId", "TargetBarycentric", "MappedPoints", "InputPointId" })
+  {
+    failures += ExpectSameArray(a->GetPointData()->GetArray(name), b->GetPointData()->GetArray(name), name);
+  }
+  failures += ExpectSameArray(a->GetPoints()->GetData(), b->GetPoints()->GetData(), "points");
+  // The stages' field data under their names.
+  auto field = [](vtkPolyData* data, const std::string& name) {
+    return data->GetFieldData()->GetArray(name.c_str());
+  };
+  failures += ExpectSameArray(field(a, "Registration.Rotation"),
+    field(registration->GetOutput(), "Rotation"), "Registration.Rotation");
+  failures += ExpectSameArray(field(a, "SourceMap.MeanQuasiConformalDistortion"),
+    field(sourceMap->GetOutput(), "MeanQuasiConformalDistortion"), "SourceMap distortion");
+  failures += ExpectSameArray(field(a, "TargetCentering.CenterOfMassNorm"),
+    field(targetCentered->GetOutput(), "CenterOfMassNorm"), "TargetCentering.CenterOfMassNorm");
+  MOBIUS_EXPECT((field(a, "MobiusCorrespondence.ClampedPoints") != nullptr) == refine);
+  MOBIUS_EXPECT((field(a, "RefinementOrthogonalityResidual") != nullptr) == refine);
+  std::cout << (refine ? "refined" : "Moebius") << " map: " << a->GetNumberOfPoints()
+            << " points, " << a->GetFieldData()->GetNumberOfArrays() << " field arrays\n";
+  return failures;
+}
+}
+
+int TestMobiusRegistration(int, char*[])
+{
+  int failures = 0;
+  auto cow = Read(MOBIUS_MESH_DIR "/cow.off");
+  auto bull = Read(MOBIUS_MESH_DIR "/bull.off");
+  if (cow->GetNumberOfPoints() < 1000 || bull->GetNumberOfPoints() < 1000)
+  {
+    std::cerr << "FAILED: cannot read CGAL's cow and bull in " MOBIUS_MESH_DIR "\n";
+    return EXIT_FAILURE;
+  }
+  failures += CompareWithChain(cow, bull, true);
+  failures += CompareWithChain(cow, bull, false);
+
+  // An open source mesh: an error naming it and the property that closes holes.
+  vtkNew<vtkPolyData> open;
+  open->DeepCopy(cow);
+  vtkNew<vtkCellArray> triangles; // all but the first: a hole
+  for (vtkIdType t = 1; t < cow->GetNumberOfCells(); ++t)
+  {
+    vtkNew<vtkIdList> ids;
+    cow->GetCellPoints(t, ids);
+    triangles->InsertNextCell(ids);
+  }
+  open->SetPolys(triangles);
+  vtkNew<vtkMobiusRegistration> whole;
+  whole->SetSourceData(open);
+  whole->SetTargetData(bull);
+  whole->SetSourceName("the open cow");
+  whole->SetResolution(16);
+  whole->SetRefine(false);
+  {
+    mobius_test::MessageCatcher catcher(whole);
+    mobius_test::MessageCatcher executiveCatcher(whole->GetExecutive());
+    whole->Update();
+    std::cout << "open source mesh: " << catcher.Error << "\n";
+    MOBIUS_EXPECT(catcher.Error.find("the open cow: ") != std::string::npos);
+    MOBIUS_EXPECT(catcher.Error.find("FillHoles") != std::string::npos);
+    MOBIUS_EXPECT(whole->GetOutput()->GetNumberOfPoints() == 0);
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
