@@ -103,14 +103,14 @@ std::string IntegerRangeWords(const mobius::IntegerRange& range)
 // degree 1 and up well before t = 1): the run would silently return garbage. A relative
 // change above 1 is no tolerance either.
 Option PipelineFraction(const std::string& name, const std::string& label, const std::string& help,
-  double PipelineOptions::*member)
+  double PipelineOptions::*member, double minimum = 0.0)
 {
   return { { name }, label, help, 1,
     [=](const Values& values, CommandLine& line, std::string& error) {
       double number = 0;
-      if (!ParseNumber(values[0], number) || !std::isfinite(number) || number < 0 || number > 1)
+      if (!ParseNumber(values[0], number) || !std::isfinite(number) || number < minimum || number > 1)
       {
-        error = name + " needs a number from 0 to 1, not '" + values[0] + "'";
+        error = name + " needs a number from " + Format(minimum) + " to 1, not '" + values[0] + "'";
         return false;
       }
       line.Pipeline.*member = number;
@@ -175,7 +175,8 @@ bool SetResolution(const Values& values, CommandLine& line, std::string& error)
   }
   if (number < mobius::MinimumResolution || number % 2 != 0)
   {
-    error = "--resolution must be even and at least 4, not " + values[0];
+    error = "--resolution must be even and at least " + std::to_string(mobius::MinimumResolution) +
+      ", not " + values[0];
     return false;
   }
   // Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
@@ -298,8 +299,9 @@ const std::vector<Option>& Options()
         "maximum flow steps (default " + std::to_string(defaults.FlowIterations) + ")",
         &PipelineOptions::FlowIterations, 1, largest, "a positive integer"),
       PipelineFraction("--tolerance", "--tolerance T",
-        "flow convergence tolerance, 0 to 1 (default " + Format(defaults.FlowTolerance) + ")",
-        &PipelineOptions::FlowTolerance),
+        "flow convergence tolerance, " + Format(mobius::MinimumFlowTolerance) + " to 1 (default " +
+          Format(defaults.FlowTolerance) + ")",
+        &PipelineOptions::FlowTolerance, mobius::MinimumFlowTolerance),
       PipelineFlag("--no-center-flow", "plain CMCF: no Moebius centering between flow steps",
         &PipelineOptions::CenterBetweenSteps, false),
       PipelineFlag("--fill-holes", "close holes instead of rejecting open meshes",
@@ -576,10 +578,19 @@ bool ParsePipelineOption(
 bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error)
 {
   std::vector<std::string> positional;
+  bool optionsEnded = false; // after "--" every argument is a file, "-name" included
   for (int i = 1; i < argc; ++i)
   {
     const std::string argument = argv[i];
-    if (const Option* option = FindOption(argument))
+    if (optionsEnded)
+    {
+      positional.push_back(argument);
+    }
+    else if (argument == "--")
+    {
+      optionsEnded = true;
+    }
+    else if (const Option* option = FindOption(argument))
     {
       if (!ApplyOption(*option, argc, argv, i, commandLine, error))
       {

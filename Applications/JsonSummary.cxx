@@ -9,11 +9,51 @@
 
 namespace
 {
+// The length of the valid UTF-8 sequence starting at text[at], 0 if there is none there
+// (a stray continuation byte, a sequence cut short, an overlong form, a surrogate).
+std::size_t Utf8SequenceLength(const std::string& text, std::size_t at)
+{
+  const auto byte = [&text](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(at);
+  const std::size_t length = lead < 0x80 ? 1 : lead >= 0xC2 && lead <= 0xDF ? 2
+    : lead >= 0xE0 && lead <= 0xEF                                          ? 3
+    : lead >= 0xF0 && lead <= 0xF4                                          ? 4
+                                                                            : 0;
+  if (length == 0 || at + length > text.size())
+  {
+    return 0;
+  }
+  for (std::size_t k = 1; k < length; ++k)
+  {
+    if ((byte(at + k) & 0xC0) != 0x80)
+    {
+      return 0;
+    }
+  }
+  const unsigned char second = length > 1 ? byte(at + 1) : 0;
+  if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second >= 0xA0) ||
+    (lead == 0xF0 && second < 0x90) || (lead == 0xF4 && second >= 0x90))
+  {
+    return 0;
+  }
+  return length;
+}
+
+// A JSON string. A file name is bytes, not necessarily UTF-8: a byte that is not part of
+// valid UTF-8 becomes U+FFFD, so that the summary stays valid JSON.
 std::string Quoted(const std::string& text)
 {
   std::string out = "\"";
-  for (char c : text)
+  for (std::size_t at = 0; at < text.size();)
   {
+    const char c = text[at];
+    const std::size_t length = Utf8SequenceLength(text, at);
+    if (length == 0)
+    {
+      out += "\\ufffd";
+      ++at;
+      continue;
+    }
     if (c == '"' || c == '\\')
     {
       out += '\\';
@@ -27,8 +67,9 @@ std::string Quoted(const std::string& text)
     }
     else
     {
-      out += c;
+      out.append(text, at, length);
     }
+    at += length;
   }
   return out + "\"";
 }

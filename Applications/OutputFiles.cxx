@@ -42,15 +42,23 @@ std::string Folder(const std::string& path)
 }
 
 bool OutputFiles::Plan(const std::string& output, const std::string& picture, bool force,
-  const std::vector<std::string>& inputs, std::string& error)
+  const std::vector<std::string>& inputs, std::string& error, bool writesCsv)
 {
   std::string stem = output;
   if (stem.size() > 4 && stem.compare(stem.size() - 4, 4, ".vtp") == 0)
   {
     stem.resize(stem.size() - 4);
   }
+  // "-o sub/" would write the hidden files sub/.vtp and sub/.csv.
+  const std::string name = stem.substr(stem.find_last_of('/') + 1);
+  if (name.empty() || name == "." || name == "..")
+  {
+    error = output + ": names a folder; -o takes the outputs' name, e.g. -o " +
+      (name.empty() ? stem : stem + "/") + "map";
+    return false;
+  }
   this->MeshPath = stem + ".vtp";
-  this->CsvPath = stem + ".csv";
+  this->CsvPath = writesCsv ? stem + ".csv" : "";
   this->PicturePath = picture;
   this->Force = force;
   for (const auto& path : { this->MeshPath, this->CsvPath, this->PicturePath })

@@ -17,11 +17,12 @@
 class OutputFiles
 {
 public:
-  /// Decides the paths from -o (a prefix, or a .vtp path) and --png; fails if a file
-  /// exists and `force` is off, if the folder does not exist, or if an output would
-  /// replace one of `inputs` (never allowed, even with `force`).
+  /// Decides the paths from -o (a prefix, or a .vtp path) and --png; fails if -o names a
+  /// folder rather than files in it, if a file exists and `force` is off, if the folder
+  /// does not exist, or if an output would replace one of `inputs` (never allowed, even
+  /// with `force`). `writesCsv` false: a job without the CSV (--orbifold) plans none.
   bool Plan(const std::string& output, const std::string& picture, bool force,
-    const std::vector<std::string>& inputs, std::string& error);
+    const std::vector<std::string>& inputs, std::string& error, bool writesCsv = true);
 
   /// The correspondence output as VTP (inline binary: Debian bookworm's expat cannot read
   /// VTK 9.2's appended data back).

@@ -13,11 +13,15 @@
 #include "vtkCommand.h"
 #include "vtkExecutive.h"
 #include "vtkNew.h"
+#include "vtkSMP.h"
 #include "vtkSurfaceMeshReader.h"
 #include "vtkVersion.h"
 
+#include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -183,7 +187,8 @@ int RunOrbifold(const CommandLine& commandLine)
   std::string error;
   OutputFiles outputs;
   vtkSmartPointer<vtkPolyData> mesh;
-  if (!outputs.Plan(commandLine.Output, "", commandLine.Force, { commandLine.Source }, error) ||
+  if (!outputs.Plan(commandLine.Output, "", commandLine.Force, { commandLine.Source }, error,
+        /*writesCsv=*/false) ||
     !ReadMesh(commandLine.Source, mesh, error))
   {
     return Fail(error);
@@ -229,6 +234,35 @@ int RunOrbifold(const CommandLine& commandLine)
 int Run(int argc, char* argv[]);
 }
 
+namespace
+{
+// VTK prints three lines straight to standard error (not through its output window, so
+// --quiet cannot hold them) when VTK_SMP_BACKEND_IN_USE names a backend this VTK was not
+// built with, and falls back on Sequential. The program does that itself, first, with one
+// warning line or none under --quiet.
+void CheckSMPBackend(bool quiet)
+{
+  const char* requested = std::getenv("VTK_SMP_BACKEND_IN_USE");
+  if (!requested)
+  {
+    return;
+  }
+  const std::string name = requested;
+  const bool built = name == "Sequential" || (VTK_SMP_ENABLE_STDTHREAD && name == "STDThread") ||
+    (VTK_SMP_ENABLE_TBB && name == "TBB") || (VTK_SMP_ENABLE_OPENMP && name == "OpenMP");
+  if (built)
+  {
+    return;
+  }
+  if (!quiet)
+  {
+    std::cerr << Program << ": warning: VTK_SMP_BACKEND_IN_USE='" << name
+              << "' is not a threading backend of this VTK; using Sequential\n";
+  }
+  setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 1);
+}
+}
+
 int main(int argc, char* argv[])
 {
   // VTK's messages become ours: warnings (unless --quiet), or nothing when the program fails
@@ -272,6 +306,7 @@ int Run(int argc, char* argv[])
               << ")\n";
     return 0;
   }
+  CheckSMPBackend(commandLine.Quiet);
   if (commandLine.Symmetry)
   {
     return RunSymmetry(commandLine);
@@ -296,7 +331,11 @@ int Run(int argc, char* argv[])
     targetName = "deformed copy of " + demo.SourcePath;
     if (commandLine.Output.empty())
     {
-      mkdir("mobius-demo", 0755);
+      if (mkdir("mobius-demo", 0755) != 0 && errno != EEXIST)
+      {
+        return Fail(std::string("mobius-demo: cannot create the demo's output folder here (") +
+          std::strerror(errno) + "); run it in a folder you can write to, or give -o OUT");
+      }
       commandLine.Output = "mobius-demo/demo";
       if (commandLine.Picture.empty())
       {

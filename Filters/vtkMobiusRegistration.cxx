@@ -103,6 +103,18 @@ void vtkMobiusRegistration::SetTargetName(const char* name)
 }
 
 //------------------------------------------------------------------------------
+int vtkMobiusRegistration::GetMinimumResolution()
+{
+  return mobius::MinimumResolution;
+}
+
+//------------------------------------------------------------------------------
+double vtkMobiusRegistration::GetMinimumConvergenceTolerance()
+{
+  return mobius::MinimumFlowTolerance;
+}
+
+//------------------------------------------------------------------------------
 int vtkMobiusRegistration::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");

@@ -139,6 +139,15 @@ public:
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
+  ///@{
+  /**
+   * The smallest Resolution and ConvergenceTolerance that can register (the stages refuse
+   * less), for interfaces that validate before they run (Python's register()).
+   */
+  static int GetMinimumResolution();
+  static double GetMinimumConvergenceTolerance();
+  ///@}
+
 protected:
   vtkMobiusRegistration();
   ~vtkMobiusRegistration() override = default;

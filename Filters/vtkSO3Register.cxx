@@ -129,10 +129,17 @@ int vtkSO3Register::ComputeOutput(
     vtkErrorMacro(<< "Both a Source (port 0) and a Target (port 1) spherical map are required.");
     return 0;
   }
-  if (this->Resolution < 4 || this->Resolution % 2 != 0)
+  if (this->Resolution < mobius::MinimumResolution || this->Resolution % 2 != 0)
   {
-    vtkErrorMacro(<< "Resolution must be even and at least 4 (it is " << this->Resolution << ").");
+    vtkErrorMacro(<< "Resolution must be even and at least " << mobius::MinimumResolution
+                  << " (it is " << this->Resolution << "): a coarser grid cannot tell the rotation.");
     return 0;
+  }
+  if (this->Resolution < mobius::ReliableResolution)
+  {
+    vtkWarningMacro(<< "Resolution " << this->Resolution << " resolves the rotation only to about "
+                    << 360 / this->Resolution << " degrees: the map may come back turned; "
+                    << mobius::ReliableResolution << " or more is reliable.");
   }
   const double memory = PhysicalMemory();
   if (memory > 0 && EstimateMemory(this->Resolution) > memory)

@@ -193,6 +193,13 @@ int vtkSphericalConformalMap::ComputeOutput(
     vtkErrorMacro(<< "Cannot map the mesh to the sphere: the input has no triangles.");
     return 0;
   }
+  if (this->ConvergenceTolerance < mobius::MinimumFlowTolerance)
+  {
+    vtkErrorMacro(<< "ConvergenceTolerance must be at least " << mobius::MinimumFlowTolerance
+                  << " (it is " << this->ConvergenceTolerance << "): the flow's relative change "
+                  << "levels off near 1e-9, so the flow would never converge.");
+    return 0;
+  }
 
   // Before anything reads the points through them (vtkTriangleFilter does).
   std::string error = mobius::vtk::CheckCellPointIds(input);

@@ -186,10 +186,10 @@ int vtkSymmetryDetection::ComputeOutput(
     vtkErrorMacro(<< "Cannot detect symmetry: the input is empty.");
     return 0;
   }
-  if (this->Resolution < 4 || this->Resolution % 2 != 0)
+  if (this->Resolution < mobius::MinimumResolution || this->Resolution % 2 != 0)
   {
-    vtkErrorMacro(<< "Resolution must be even and at least 4 (it is " << this->Resolution
-                  << ").");
+    vtkErrorMacro(<< "Resolution must be even and at least " << mobius::MinimumResolution
+                  << " (it is " << this->Resolution << ").");
     return 0;
   }
 

@@ -243,9 +243,20 @@ def register(source, target, **options):
     options = dict(DEFAULT_OPTIONS, **options)
     if options["transform"] not in _TRANSFORM_MODES:
         raise ValueError(f"transform must be one of {', '.join(_TRANSFORM_MODES)}, got {options['transform']!r}")
-    resolution = int(options["resolution"])
-    if resolution < 4 or resolution % 2:
-        raise ValueError(f"resolution must be an even number >= 4, got {options['resolution']!r}")
+    resolution = options["resolution"]
+    smallest = vtkMobiusRegistration.GetMinimumResolution()
+    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) \
+            or resolution < smallest or resolution % 2:
+        raise ValueError(f"resolution must be an even integer >= {smallest}, got {options['resolution']!r}")
+    # As mobius-register --tolerance and --smoothing: NaN and infinity pass the filters' clamps.
+    for name, low in (("tolerance", vtkMobiusRegistration.GetMinimumConvergenceTolerance()), ("smoothing", 0.0)):
+        value = options[name]
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
+                or not low <= float(value) <= 1:
+            raise ValueError(f"{name} must be a number from {low:g} to 1, got {value!r}")
+    candidates = options["candidates"]
+    if isinstance(candidates, bool) or not isinstance(candidates, (int, np.integer)) or not 1 <= candidates <= 64:
+        raise ValueError(f"candidates must be an integer from 1 to 64, got {candidates!r}")
     candidate = options["candidate"]
     if candidate is not None and (isinstance(candidate, bool) or not isinstance(candidate, (int, np.integer))
                                   or not 0 <= candidate < int(options["candidates"])):
