@@ -331,7 +331,9 @@ int Run(int argc, char* argv[])
     targetName = "deformed copy of " + demo.SourcePath;
     if (commandLine.Output.empty())
     {
-      if (mkdir("mobius-demo", 0755) != 0 && errno != EEXIST)
+      struct stat folder;
+      if (mkdir("mobius-demo", 0755) != 0 &&
+        (errno != EEXIST || stat("mobius-demo", &folder) != 0 || !S_ISDIR(folder.st_mode)))
       {
         return Fail(std::string("mobius-demo: cannot create the demo's output folder here (") +
           std::strerror(errno) + "); run it in a folder you can write to, or give -o OUT");

@@ -106,6 +106,46 @@ shutil.copy(hand, os.path.join(work, "mine.vtp.off"))
 code, _, err = run(hand, "mine.vtp.off", "-o", "mine.vtp.off", "--png", "mine.vtp.off", "--force")
 check(code == 1 and "is an input mesh" in err, f"output onto an input: {code} {err}")
 check(os.path.getsize(os.path.join(work, "mine.vtp.off")) == os.path.getsize(hand), "input kept")
+# Options a coarse or unreachable setting (issue: wrong maps with exit 0, a flow that never ends).
+expect_failure([hand, hand, "-o", "out7", "--resolution", "6"], ["--resolution", "at least 8"], ["out7"],
+               code_expected=2)
+expect_failure([hand, hand, "-o", "out8", "--tolerance", "0"], ["--tolerance", "1e-08"], ["out8"], code_expected=2)
+code, _, err = run(hand, hand, "-o", "coarse", "--resolution", "16", "--refine", "none")
+check(code == 0 and "warning" in err and "Resolution 16" in err and "turned" in err,
+      f"--resolution 16 warns that the rotation is coarse: {code} {err!r}")
+# "--" ends the options: a mesh whose name starts with a dash.
+shutil.copy(hand, os.path.join(work, "-dash.off"))
+code, _, err = run("-o", "dashed", "--resolution", "32", "--quiet", "--", "-dash.off", "-dash.off")
+check(code == 0 and os.path.exists(os.path.join(work, "dashed.csv")), f"-- ends the options: {code} {err!r}")
+# -o naming a folder would write the hidden files sub/.vtp and sub/.csv.
+os.makedirs(os.path.join(work, "sub"), exist_ok=True)
+expect_failure([hand, hand, "-o", "sub/"], ["sub/", "names a folder", "-o sub/map"], [], code_expected=1)
+check(not os.listdir(os.path.join(work, "sub")), "-o sub/ wrote nothing in sub")
+# The demo where its folder cannot be made (a file named mobius-demo is in the way).
+demo_work = os.path.join(work, "demo-blocked")
+os.makedirs(demo_work, exist_ok=True)
+open(os.path.join(demo_work, "mobius-demo"), "w").close()
+code, _, err = run("--quiet", cwd=demo_work)
+check(code == 1 and "mobius-demo" in err and "cannot create" in err and "does not exist" not in err,
+      f"demo without its folder: {code} {err!r}")
+# A file name that is not UTF-8: --json stays valid JSON.
+odd = b"caf\xe9-\xff.off"
+shutil.copy(hand, os.path.join(work.encode(), odd))
+code, out, err = harness.run(odd.decode("utf-8", "surrogateescape"), hand, "-o", "odd", "--resolution", "32",
+                             "--refine", "none", "--json", "--quiet")
+try:
+    check(code == 0 and "\ufffd" in json.loads(out)["source"], f"--json with a non-UTF-8 name: {code} {out[:200]!r}")
+except ValueError as invalid:
+    check(False, f"--json with a non-UTF-8 name is not JSON: {invalid}: {out[:200]!r}")
+# VTK's own three lines for an unknown threading backend become one line, none under --quiet.
+bogus = dict(os.environ, VTK_SMP_BACKEND_IN_USE="Bogus")
+code, _, err = run(hand, hand, "-o", "bogus", "--resolution", "32", "--refine", "none", "--quiet", env=bogus)
+check(code == 0 and err == "", f"VTK_SMP_BACKEND_IN_USE=Bogus under --quiet: {code} {err!r}")
+code, _, err = run(hand, hand, "-o", "bogus", "--resolution", "32", "--refine", "none", "--force", env=bogus)
+warned = [line for line in err.splitlines() if "Bogus" in line]
+check(code == 0 and len(warned) == 1 and "Using Sequential instead" not in err,
+      f"VTK_SMP_BACKEND_IN_USE=Bogus: {code} {err!r}")
+
 no_display = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
 expect_failure([hand, hand, "-o", "out6", "--png", "out6.png", "--resolution", "32"],
                ["out6.png", "X display"], ["out6"], env=no_display)

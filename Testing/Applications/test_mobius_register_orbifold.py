@@ -58,6 +58,13 @@ if code == 0:
 
 code, out, err = run("--orbifold", "2", hand, "-o", "hand-text")
 check(code == 0 and "orbifold map of" in out and "symmetry error" in out, f"plain output: {code} {out!r}")
+# --orbifold writes no CSV: a file at OUT.csv is neither refused nor touched.
+with open(os.path.join(work, "with-csv.csv"), "w") as f:
+    f.write("mine\n")
+code, out, err = run("--orbifold", "2", hand, "-o", "with-csv")
+with open(os.path.join(work, "with-csv.csv")) as f:
+    kept = f.read() == "mine\n"
+check(code == 0 and kept, f"--orbifold with an unrelated OUT.csv: {code} {err!r}")
 
 code, out, err = run("--orbifold", "2", hand, "-o", "far", "--cones", f"0,{vertices}")
 check(code == 1 and "does not exist" in err, f"cone outside the mesh: {code} {err!r}")
