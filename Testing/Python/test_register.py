@@ -155,4 +155,15 @@ for bad in (1, 501, 2.5, True):
         assert "basis_size" in str(error)
     else:
         raise AssertionError(f"basis_size={bad!r} accepted")
+# What mobius-register refuses, register() refuses (it accepted these and returned wrong maps
+# or never ended): a coarse grid, an unreachable tolerance, NaN and infinite times, no candidates.
+for name, bad in (("resolution", 6), ("resolution", 32.0), ("tolerance", 0), ("tolerance", -1), ("tolerance", 5),
+                  ("smoothing", float("inf")), ("smoothing", 1e308), ("smoothing", float("nan")),
+                  ("candidates", 0), ("candidates", -5)):
+    try:
+        register(hand, hand, **{name: bad})
+    except ValueError as error:
+        assert name in str(error), str(error)
+    else:
+        raise AssertionError(f"{name}={bad!r} accepted")
 print("register() checks passed")
