@@ -2,7 +2,6 @@
 
 #include "GeneralizedCentering.h"
 #include "MobiusCentering.h"
-#include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkDoubleArray.h"
@@ -17,18 +16,6 @@ vtkStandardNewMacro(vtkMobiusCenter);
 
 //------------------------------------------------------------------------------
 vtkMobiusCenter::vtkMobiusCenter() = default;
-
-//------------------------------------------------------------------------------
-int vtkMobiusCenter::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
 
 //------------------------------------------------------------------------------
 int vtkMobiusCenter::ComputeOutput(

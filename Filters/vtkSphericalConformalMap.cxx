@@ -4,7 +4,6 @@
 #include "MapDistortion.h"
 #include "MapVerdict.h"
 #include "MeshTopology.h"
-#include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkCellArray.h"
@@ -150,18 +149,6 @@ void CopyAttributes(vtkDataSetAttributes* source, vtkDataSetAttributes* target,
 
 //------------------------------------------------------------------------------
 vtkSphericalConformalMap::vtkSphericalConformalMap() = default;
-
-//------------------------------------------------------------------------------
-int vtkSphericalConformalMap::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
 
 //------------------------------------------------------------------------------
 int vtkSphericalConformalMap::ComputeOutput(

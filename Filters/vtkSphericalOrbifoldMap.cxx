@@ -1,7 +1,6 @@
 #include "vtkSphericalOrbifoldMap.h"
 
 #include "SphericalOrbifoldMap.h"
-#include "vtkDistributedInputs.h"
 #include "vtkSphericalConformalMap.h"
 #include "vtkSphericalMapData.h"
 
@@ -82,18 +81,6 @@ void AddIds(vtkFieldData* fieldData, const char* name, const std::vector<vtkIdTy
 
 //------------------------------------------------------------------------------
 vtkSphericalOrbifoldMap::vtkSphericalOrbifoldMap() = default;
-
-//------------------------------------------------------------------------------
-int vtkSphericalOrbifoldMap::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
 
 //------------------------------------------------------------------------------
 int vtkSphericalOrbifoldMap::ComputeOutput(

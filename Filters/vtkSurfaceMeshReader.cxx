@@ -449,22 +449,6 @@ bool vtkSurfaceMeshReader::IsSupportedFile(const char* fileName)
 }
 
 //------------------------------------------------------------------------------
-int vtkSurfaceMeshReader::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // No exception may leave the pipeline (in ParaView it would end the application): running
-  // out of memory, or a failure in a worker thread, becomes this filter's error.
-  try
-  {
-    return this->ComputeOutput(request, inputVector, outputVector);
-  }
-  catch (...)
-  {
-    return mobius::vtk::ReportException(this, outputVector, this->FileName ? this->FileName : "");
-  }
-}
-
-//------------------------------------------------------------------------------
 int vtkSurfaceMeshReader::ComputeOutput(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {

@@ -9,7 +9,6 @@
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
 #include "vtkSphericalConformalMap.h"
-#include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkCallbackCommand.h"
@@ -145,18 +144,6 @@ void AddTuples(vtkFieldData* fieldData, const char* name, int components,
 
 //------------------------------------------------------------------------------
 vtkSymmetryDetection::vtkSymmetryDetection() = default;
-
-//------------------------------------------------------------------------------
-int vtkSymmetryDetection::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
 
 //------------------------------------------------------------------------------
 int vtkSymmetryDetection::ComputeOutput(
@@ -417,5 +404,4 @@ void vtkSymmetryDetection::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BasisSize: " << this->BasisSize << "\n";
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }
