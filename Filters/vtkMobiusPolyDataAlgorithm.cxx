@@ -1,7 +1,13 @@
 #include "vtkMobiusPolyDataAlgorithm.h"
 
+#include "MobiusFilterMessages.h"
 #include "vtkDistributedInputs.h"
 #include "vtkSphericalMapData.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
 
 //------------------------------------------------------------------------------
 int vtkMobiusPolyDataAlgorithm::RequestData(
@@ -26,6 +32,44 @@ int vtkMobiusPolyDataAlgorithm::RequestData(
     this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
       return this->ComputeOutput(request, wholeInputs, outputVector);
     });
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkMobiusPolyDataAlgorithm::RunInternalFilter(
+  vtkPolyDataAlgorithm* filter, double begin, double end, std::string& error,
+  std::vector<std::string>& warnings)
+{
+  struct Slice
+  {
+    vtkMobiusPolyDataAlgorithm* Owner;
+    double Begin, End;
+  } slice{ this, begin, end };
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&slice);
+  progress->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
+    auto stage = static_cast<Slice*>(clientData);
+    const double fraction = callData ? *static_cast<double*>(callData) : 0.0;
+    stage->Owner->UpdateProgress(stage->Begin + (stage->End - stage->Begin) * fraction);
+    if (stage->Owner->GetAbortExecute())
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  const unsigned long progressTag = filter->AddObserver(vtkCommand::ProgressEvent, progress);
+  {
+    mobius::vtk::FilterMessages messages(filter);
+    filter->Update();
+    error = messages.Error;
+    warnings.insert(warnings.end(), messages.Warnings.begin(), messages.Warnings.end());
+  }
+  filter->RemoveObserver(progressTag);
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->ShallowCopy(filter->GetOutput());
+  if (!error.empty() || output->GetNumberOfPoints() == 0 || this->GetAbortExecute())
+  {
+    return nullptr;
+  }
+  return output;
 }
 
 //------------------------------------------------------------------------------

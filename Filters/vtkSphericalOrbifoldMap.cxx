@@ -4,13 +4,10 @@
 #include "vtkSphericalConformalMap.h"
 #include "vtkSphericalMapData.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -41,26 +38,6 @@ bool IsSphericalMap(vtkPolyData* input)
     input->GetCellData()->GetArray(mobius::vtk::SurfaceAreaArrayName) &&
     mobius::vtk::ExtractPoints(input, points).empty() &&
     mobius::vtk::CheckOnUnitSphere(points).empty();
-}
-
-// Collects the first error message of an internal filter (without VTK's prefix).
-void CollectError(vtkObject*, unsigned long, void* clientData, void* callData)
-{
-  auto error = static_cast<std::string*>(clientData);
-  std::string text = callData ? static_cast<const char*>(callData) : "";
-  const auto colon = text.find("): ");
-  if (colon != std::string::npos)
-  {
-    text = text.substr(colon + 3);
-  }
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-  {
-    text.pop_back();
-  }
-  if (error->empty())
-  {
-    *error = text;
-  }
 }
 
 void AddIds(vtkFieldData* fieldData, const char* name, const std::vector<vtkIdType>& ids,
@@ -125,20 +102,23 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
     vtkNew<vtkSphericalConformalMap> conformal;
     conformal->SetInputData(map);
     std::string error;
-    vtkNew<vtkCallbackCommand> errors;
-    errors->SetCallback(CollectError);
-    errors->SetClientData(&error);
-    vtkNew<vtkCallbackCommand> ignore; // the executive's "returned failure" repeats the error
-    conformal->AddObserver(vtkCommand::ErrorEvent, errors);
-    conformal->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
-    conformal->Update();
-    if (!error.empty() || conformal->GetOutput()->GetNumberOfPoints() == 0)
+    std::vector<std::string> warnings;
+    vtkSmartPointer<vtkPolyData> conformalMap =
+      this->RunInternalFilter(conformal, 0.0, 0.2, error, warnings);
+    for (const auto& warning : warnings)
     {
-      vtkErrorMacro(<< "Cannot compute an orbifold map: conformal map: "
-                    << (error.empty() ? "no output" : error));
+      vtkWarningMacro(<< "conformal map: " << warning);
+    }
+    if (!conformalMap)
+    {
+      if (!this->GetAbortExecute())
+      {
+        vtkErrorMacro(<< "Cannot compute an orbifold map: conformal map: "
+                      << (error.empty() ? "no output" : error));
+      }
       return 0;
     }
-    map->ShallowCopy(conformal->GetOutput());
+    map->ShallowCopy(conformalMap);
   }
   this->UpdateProgress(0.2);
 

@@ -1,12 +1,13 @@
 #include "vtkSurfaceMeshReader.h"
 
+#include "MobiusFilterMessages.h"
+
 #include "vtkMeshFileChecks.h"
 #include "vtkSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -363,25 +364,10 @@ std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
   return {};
 }
 
-// The reason in a VTK error message, without its file, line and object prefixes
-// ("ERROR: In file, line n\nvtkXMLPolyDataReader (0x...): "), as one printable line.
+// The reason in a VTK error message as one printable line.
 std::string VTKMessageReason(const std::string& message)
 {
-  std::string reason = message;
-  if (reason.compare(0, 9, "ERROR: In") == 0 && reason.find('\n') != std::string::npos)
-  {
-    reason = reason.substr(reason.find('\n') + 1);
-  }
-  const auto object = reason.find("): ");
-  if (reason.compare(0, 3, "vtk") == 0 && object != std::string::npos)
-  {
-    reason = reason.substr(object + 3);
-  }
-  while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
-  {
-    reason.pop_back();
-  }
-  return PrintableLine(reason);
+  return PrintableLine(mobius::vtk::MessageSentence(message));
 }
 
 // An observer keeping the first message it sees in `message`.
@@ -402,10 +388,7 @@ vtkSmartPointer<vtkCallbackCommand> FirstMessageCatcher(std::string* message)
 // Runs a VTK reader, turning its error events into our message.
 std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
 {
-  std::string error;
-  auto catcher = FirstMessageCatcher(&error);
-  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
+  mobius::vtk::FilterMessages messages(reader, /*catchWarnings=*/false);
   // The XML reader's own message for a file it cannot parse is "Error parsing input file.
   // ReadXMLInformation aborting.": the parser's (line, column and what is wrong) says more.
   std::string parserError;
@@ -415,6 +398,8 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
     xml->SetParserErrorObserver(parserCatcher);
   }
   reader->Update();
+  // The executive's "returned failure" only when the reader said nothing itself.
+  const std::string error = messages.Error.empty() ? messages.ExecutiveError : messages.Error;
   auto result = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (error.empty() && result)
   {
@@ -424,7 +409,7 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
   {
     return "the VTK XML file cannot be parsed: " + VTKMessageReason(parserError);
   }
-  return VTKMessageReason(error);
+  return PrintableLine(error);
 }
 }
 
