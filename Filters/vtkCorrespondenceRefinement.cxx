@@ -7,9 +7,9 @@
 #include "SphericalPointLocator.h"
 #include "SurfacePolish.h"
 #include "ZoomOut.h"
-#include "vtkCorrespondenceOutput.h"
-#include "vtkLaplaceBeltramiBasisData.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusCorrespondenceOutput.h"
+#include "MobiusLaplaceBeltramiBasisData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"

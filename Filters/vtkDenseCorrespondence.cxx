@@ -2,8 +2,8 @@
 
 #include "ParallelFor.h"
 #include "SphericalPointLocator.h"
-#include "vtkCorrespondenceOutput.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusCorrespondenceOutput.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkFieldData.h"
 #include "vtkInformation.h"

@@ -1,8 +1,8 @@
 #include "vtkLaplaceBeltramiBasis.h"
 
 #include "LaplaceBeltramiBasis.h"
-#include "vtkLaplaceBeltramiBasisData.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusLaplaceBeltramiBasisData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"

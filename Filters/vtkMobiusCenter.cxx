@@ -2,7 +2,7 @@
 
 #include "GeneralizedCentering.h"
 #include "MobiusCentering.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"

@@ -1,8 +1,8 @@
 #include "vtkMobiusPolyDataAlgorithm.h"
 
 #include "MobiusFilterMessages.h"
-#include "vtkDistributedInputs.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusDistributedInputs.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"

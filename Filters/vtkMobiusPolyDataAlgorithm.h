@@ -6,7 +6,7 @@
  * A filter derives from this class and implements ComputeOutput, its own work. RequestData
  * (final here) runs it:
  * - on the whole surface of every input, also when ParaView splits the inputs over ranks
- *   (the result then lives on rank 0; vtkDistributedInputs.h); an empty input gives an
+ *   (the result then lives on rank 0; MobiusDistributedInputs.h); an empty input gives an
  *   empty output and no error. A source (no input port) runs as it is.
  * - behind the exception guard: no exception leaves the pipeline (in ParaView it would end
  *   the application); running out of memory, or a failure in a worker thread, becomes the

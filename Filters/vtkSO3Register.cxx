@@ -3,7 +3,7 @@
 #include "ParallelFor.h"
 #include "SO3Correlation.h"
 #include "ScaleFactorSignal.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"

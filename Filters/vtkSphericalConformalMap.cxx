@@ -4,7 +4,7 @@
 #include "MapDistortion.h"
 #include "MapVerdict.h"
 #include "MeshTopology.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

@@ -2,7 +2,7 @@
 
 #include "SphericalOrbifoldMap.h"
 #include "vtkSphericalConformalMap.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

@@ -2,7 +2,7 @@
 
 #include "ParallelFor.h"
 #include "ScaleFactorSignal.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"

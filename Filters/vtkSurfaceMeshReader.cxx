@@ -2,8 +2,8 @@
 
 #include "MobiusFilterMessages.h"
 
-#include "vtkMeshFileChecks.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusMeshFileChecks.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCallbackCommand.h"
