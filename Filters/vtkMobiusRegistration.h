@@ -34,15 +34,16 @@
 #define vtkMobiusRegistration_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
 #include <string> // For the names
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusRegistration : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusRegistration
+  : public vtkMobiusThreadedPolyDataAlgorithm
 {
 public:
   static vtkMobiusRegistration* New();
-  vtkTypeMacro(vtkMobiusRegistration, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMobiusRegistration, vtkMobiusThreadedPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -133,19 +134,12 @@ public:
   vtkGetMacro(OutputGeometry, int);
   ///@}
 
-  ///@{
-  /** Threads of each threaded stage (0: one per core); the result is the same for any. */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
 protected:
   vtkMobiusRegistration();
   ~vtkMobiusRegistration() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: mobius::RegistrationParameters (the constructor).
   std::string SourceName = "Source";
@@ -166,7 +160,6 @@ protected:
   bool GeometricPolish;
   int Candidate;
   int OutputGeometry;
-  int NumberOfThreads;
 
 private:
   vtkMobiusRegistration(const vtkMobiusRegistration&) = delete;
