@@ -1,5 +1,7 @@
 #include "VTKMessages.h"
 
+#include "MobiusFilterMessages.h"
+
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -23,30 +25,6 @@ Buffer& Messages()
 {
   static Buffer buffer;
   return buffer;
-}
-
-// "ERROR: In /path/file.cxx, line 12\nvtkClass (0x1234): The reason.\n\n" -> "The reason."
-std::string Sentence(std::string text)
-{
-  const auto object = text.find("): ");
-  if (object != std::string::npos)
-  {
-    text = text.substr(object + 3);
-  }
-  else
-  {
-    const auto lastBreak = text.find_last_of('\n', text.find_last_not_of("\n "));
-    if (lastBreak != std::string::npos)
-    {
-      text = text.substr(lastBreak + 1);
-    }
-  }
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  while (!text.empty() && text.back() == ' ')
-  {
-    text.pop_back();
-  }
-  return text;
 }
 }
 
@@ -76,7 +54,7 @@ vtkStandardNewMacro(vtkCapturedOutputWindow);
 
 void vtkCapturedOutputWindow::Capture(const char* text)
 {
-  const std::string sentence = Sentence(text ? text : "");
+  const std::string sentence = mobius::vtk::MessageSentence(text ? text : "");
   if (sentence.empty())
   {
     return;

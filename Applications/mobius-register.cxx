@@ -3,15 +3,13 @@
 #include "CommandLine.h"
 #include "DemoMeshes.h"
 #include "JsonSummary.h"
+#include "MobiusFilterMessages.h"
 #include "MemoryReuse.h"
 #include "OutputFiles.h"
 #include "RegistrationPipeline.h"
 #include "StandardOutput.h"
 #include "VTKMessages.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkNew.h"
 #include "vtkSMP.h"
 #include "vtkSurfaceMeshReader.h"
@@ -43,19 +41,9 @@ int Fail(const std::string& message, int status = 1)
 bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::string& error)
 {
   vtkNew<vtkSurfaceMeshReader> reader;
-  std::string message;
-  vtkNew<vtkCallbackCommand> catcher;
-  catcher->SetClientData(&message);
-  catcher->SetCallback([](vtkObject*, unsigned long, void* out, void* data) {
-    auto text = static_cast<std::string*>(out);
-    if (text->empty() && data)
-    {
-      *text = static_cast<const char*>(data);
-    }
-  });
-  vtkNew<vtkCallbackCommand> ignore;
-  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
+  // Its warnings reach VTK's output window, which CaptureVTKMessages turns into ours.
+  mobius::vtk::FilterMessages messages(reader, /*catchWarnings=*/false);
+  const std::string& message = messages.Error;
   reader->SetFileName(path.c_str());
   // The reader reports its own exceptions; this is for anything thrown around it.
   try
@@ -72,10 +60,6 @@ bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::
     // The reader's message starts with the file name already; drop VTK's class prefix.
     const auto start = message.find(path);
     error = start != std::string::npos ? message.substr(start) : path + ": cannot read the mesh";
-    while (!error.empty() && (error.back() == '\n' || error.back() == ' '))
-    {
-      error.pop_back();
-    }
     return false;
   }
   mesh = reader->GetOutput();

@@ -1,9 +1,7 @@
 #include "ScoreInput.h"
 
-#include "vtkCallbackCommand.h"
+#include "MobiusFilterMessages.h"
 #include "vtkCellArray.h"
-#include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkSurfaceMeshReader.h"
@@ -89,29 +87,14 @@ private:
 bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::string& error)
 {
   vtkNew<vtkSurfaceMeshReader> reader;
-  std::string message;
-  vtkNew<vtkCallbackCommand> catcher;
-  catcher->SetClientData(&message);
-  catcher->SetCallback([](vtkObject*, unsigned long, void* out, void* data) {
-    auto text = static_cast<std::string*>(out);
-    if (text->empty() && data)
-    {
-      *text = static_cast<const char*>(data);
-    }
-  });
-  vtkNew<vtkCallbackCommand> ignore;
-  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
+  mobius::vtk::FilterMessages messages(reader, /*catchWarnings=*/false);
+  const std::string& message = messages.Error;
   reader->SetFileName(path.c_str());
   reader->Update();
   if (!message.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
     const auto start = message.find(path);
     error = start != std::string::npos ? message.substr(start) : path + ": cannot read the mesh";
-    while (!error.empty() && (error.back() == '\n' || error.back() == ' '))
-    {
-      error.pop_back();
-    }
     return false;
   }
   mesh = reader->GetOutput();

@@ -1,5 +1,6 @@
 #include "MobiusPipeline.h"
 
+#include "MobiusFilterMessages.h"
 #include "ParallelFor.h"
 #include "RegistrationParameters.h"
 #include "vtkCorrespondenceRefinement.h"
@@ -13,7 +14,6 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
-#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPolyDataAlgorithm.h"
@@ -27,64 +27,35 @@
 
 namespace
 {
-// Collects a filter's errors and warnings (instead of letting VTK print them) and forwards
-// its progress.
-class FilterMonitor
+// Forwards a filter's progress as `stage`'s while it lives.
+class ProgressForwarder
 {
 public:
-  FilterMonitor(vtkAlgorithm* filter, std::string stage, const StageProgress& progress)
-    : Stage(std::move(stage))
+  ProgressForwarder(vtkAlgorithm* filter, std::string stage, const StageProgress& progress)
+    : Filter(filter)
+    , Stage(std::move(stage))
     , Progress(progress)
   {
-    this->Messages->SetClientData(this);
-    this->Messages->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
-      auto monitor = static_cast<FilterMonitor*>(self);
-      std::string text = data ? static_cast<const char*>(data) : "";
-      // VTK prefixes messages with the class and address; keep the sentence.
-      const auto colon = text.find("): ");
-      if (colon != std::string::npos)
-      {
-        text = text.substr(colon + 3);
-      }
-      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-      {
-        text.pop_back();
-      }
-      if (event == vtkCommand::ErrorEvent)
-      {
-        if (monitor->Error.empty())
-        {
-          monitor->Error = text;
-        }
-      }
-      else
-      {
-        monitor->Warnings.push_back(text);
-      }
-    });
     this->OnProgress->SetClientData(this);
     this->OnProgress->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
-      auto monitor = static_cast<FilterMonitor*>(self);
-      if (monitor->Progress && data)
+      auto forwarder = static_cast<ProgressForwarder*>(self);
+      if (forwarder->Progress && data)
       {
-        monitor->Progress(monitor->Stage, *static_cast<double*>(data));
+        forwarder->Progress(forwarder->Stage, *static_cast<double*>(data));
       }
     });
-    filter->AddObserver(vtkCommand::ErrorEvent, this->Messages);
-    filter->AddObserver(vtkCommand::WarningEvent, this->Messages);
-    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Ignore);
-    filter->AddObserver(vtkCommand::ProgressEvent, this->OnProgress);
+    this->Tag = filter->AddObserver(vtkCommand::ProgressEvent, this->OnProgress);
   }
-
-  std::string Stage;
-  std::string Error;
-  std::vector<std::string> Warnings;
+  ~ProgressForwarder() { this->Filter->RemoveObserver(this->Tag); }
+  ProgressForwarder(const ProgressForwarder&) = delete;
+  ProgressForwarder& operator=(const ProgressForwarder&) = delete;
 
 private:
+  vtkAlgorithm* Filter;
+  std::string Stage;
   StageProgress Progress;
-  vtkNew<vtkCallbackCommand> Messages;
   vtkNew<vtkCallbackCommand> OnProgress;
-  vtkNew<vtkCallbackCommand> Ignore; // the executive's "returned failure" repeats the error
+  unsigned long Tag;
 };
 
 // Runs `filter`, timing it as `stage`. False (with `error` set) if it failed.
@@ -92,7 +63,8 @@ bool RunStage(vtkPolyDataAlgorithm* filter, const std::string& stage, const std:
   const StageProgress& progress, PipelineResult& result, vtkSmartPointer<vtkPolyData>& output,
   std::string& error)
 {
-  FilterMonitor monitor(filter, stage, progress);
+  mobius::vtk::FilterMessages monitor(filter);
+  ProgressForwarder forwarder(filter, stage, progress);
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
   const double seconds =

@@ -8,10 +8,9 @@
 #include "SphericalPointLocator.h"
 #include "SurfacePolish.h"
 #include "ZoomOut.h"
-#include "vtkCorrespondenceOutput.h"
-#include "vtkDistributedInputs.h"
-#include "vtkLaplaceBeltramiBasisData.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusCorrespondenceOutput.h"
+#include "MobiusLaplaceBeltramiBasisData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -223,18 +222,6 @@ int vtkCorrespondenceRefinement::FillInputPortInformation(int, vtkInformation* i
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkCorrespondenceRefinement::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
 }
 
 //------------------------------------------------------------------------------
@@ -517,5 +504,4 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CandidateCriterion: " << this->CandidateCriterion << "\n";
   os << indent << "Candidate: " << this->Candidate << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

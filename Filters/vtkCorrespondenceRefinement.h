@@ -73,13 +73,14 @@
 #define vtkCorrespondenceRefinement_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkCorrespondenceRefinement : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkCorrespondenceRefinement
+  : public vtkMobiusThreadedPolyDataAlgorithm
 {
 public:
   static vtkCorrespondenceRefinement* New();
-  vtkTypeMacro(vtkCorrespondenceRefinement, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkCorrespondenceRefinement, vtkMobiusThreadedPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum OutputGeometries
@@ -255,25 +256,12 @@ public:
   void SetOutputGeometryToSource() { this->SetOutputGeometry(SOURCE); }
   ///@}
 
-  ///@{
-  /**
-   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
-   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
-   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
-   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
-   * `NumberOfThreadsUsed` reports the count the filter ran with.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
 protected:
   vtkCorrespondenceRefinement();
   ~vtkCorrespondenceRefinement() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: mobius::RegistrationParameters (the constructor).
   int BasisSize;
@@ -290,7 +278,6 @@ protected:
   int CandidateCriterion = CURVATURE;
   int Candidate;
   int OutputGeometry;
-  int NumberOfThreads;
 
 private:
   vtkCorrespondenceRefinement(const vtkCorrespondenceRefinement&) = delete;

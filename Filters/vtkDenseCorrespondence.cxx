@@ -3,9 +3,8 @@
 #include "RegistrationParameters.h"
 #include "ParallelFor.h"
 #include "SphericalPointLocator.h"
-#include "vtkCorrespondenceOutput.h"
-#include "vtkDistributedInputs.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusCorrespondenceOutput.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -34,18 +33,6 @@ int vtkDenseCorrespondence::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkDenseCorrespondence::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
 }
 
 //------------------------------------------------------------------------------
@@ -143,5 +130,4 @@ void vtkDenseCorrespondence::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
   os << indent << "Direction: " << this->Direction << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

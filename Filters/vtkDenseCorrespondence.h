@@ -45,13 +45,14 @@
 #define vtkDenseCorrespondence_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkDenseCorrespondence : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkDenseCorrespondence
+  : public vtkMobiusThreadedPolyDataAlgorithm
 {
 public:
   static vtkDenseCorrespondence* New();
-  vtkTypeMacro(vtkDenseCorrespondence, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkDenseCorrespondence, vtkMobiusThreadedPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum OutputGeometries
@@ -96,31 +97,16 @@ public:
   void SetDirectionToTargetToSource() { this->SetDirection(TARGET_TO_SOURCE); }
   ///@}
 
-  ///@{
-  /**
-   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
-   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
-   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
-   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
-   * `NumberOfThreadsUsed` reports the count the filter ran with.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
 protected:
   vtkDenseCorrespondence();
   ~vtkDenseCorrespondence() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The work of RequestData, which turns an exception thrown here into an error.
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: mobius::RegistrationParameters (the constructor).
   int OutputGeometry;
   int Direction = SOURCE_TO_TARGET;
-  int NumberOfThreads;
 
 private:
   vtkDenseCorrespondence(const vtkDenseCorrespondence&) = delete;

@@ -1,9 +1,8 @@
 #include "vtkLaplaceBeltramiBasis.h"
 
 #include "LaplaceBeltramiBasis.h"
-#include "vtkDistributedInputs.h"
-#include "vtkLaplaceBeltramiBasisData.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusLaplaceBeltramiBasisData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -12,18 +11,6 @@
 #include "vtkPolyData.h"
 
 vtkStandardNewMacro(vtkLaplaceBeltramiBasis);
-
-//------------------------------------------------------------------------------
-int vtkLaplaceBeltramiBasis::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The basis is global: the whole surface, also when ParaView splits it over ranks (the
-  // result then lives on rank 0); an empty input gives an empty output.
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
 
 //------------------------------------------------------------------------------
 int vtkLaplaceBeltramiBasis::ComputeOutput(

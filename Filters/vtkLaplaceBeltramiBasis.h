@@ -38,13 +38,14 @@
 #define vtkLaplaceBeltramiBasis_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkLaplaceBeltramiBasis : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkLaplaceBeltramiBasis
+  : public vtkMobiusPolyDataAlgorithm
 {
 public:
   static vtkLaplaceBeltramiBasis* New();
-  vtkTypeMacro(vtkLaplaceBeltramiBasis, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkLaplaceBeltramiBasis, vtkMobiusPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -60,8 +61,7 @@ protected:
   vtkLaplaceBeltramiBasis() = default;
   ~vtkLaplaceBeltramiBasis() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int BasisSize = 80;
 

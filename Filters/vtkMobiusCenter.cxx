@@ -3,8 +3,7 @@
 #include "RegistrationParameters.h"
 #include "GeneralizedCentering.h"
 #include "MobiusCentering.h"
-#include "vtkDistributedInputs.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -23,18 +22,6 @@ vtkMobiusCenter::vtkMobiusCenter()
   this->Tolerance = defaults.CenteringTolerance;
   this->Degree = defaults.CenteringDegree;
   this->GeneralizedTolerance = defaults.GeneralizedCenteringTolerance;
-}
-
-//------------------------------------------------------------------------------
-int vtkMobiusCenter::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
 }
 
 //------------------------------------------------------------------------------

@@ -54,13 +54,14 @@
 #define vtkMobiusCenter_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusCenter : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusCenter
+  : public vtkMobiusPolyDataAlgorithm
 {
 public:
   static vtkMobiusCenter* New();
-  vtkTypeMacro(vtkMobiusCenter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMobiusCenter, vtkMobiusPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -107,9 +108,7 @@ protected:
   vtkMobiusCenter();
   ~vtkMobiusCenter() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The work of RequestData, which turns an exception thrown here into an error.
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: mobius::RegistrationParameters (the constructor).
   double Tolerance;

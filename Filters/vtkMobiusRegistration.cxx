@@ -2,7 +2,6 @@
 
 #include "MobiusPipeline.h"
 #include "RegistrationParameters.h"
-#include "vtkDistributedInputs.h"
 
 #include "vtkAbstractArray.h"
 #include "vtkFieldData.h"
@@ -122,18 +121,6 @@ int vtkMobiusRegistration::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkMobiusRegistration::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole meshes, also when ParaView splits them over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
-
-//------------------------------------------------------------------------------
 int vtkMobiusRegistration::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -229,5 +216,4 @@ void vtkMobiusRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
   os << indent << "Candidate: " << this->Candidate << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -34,15 +34,16 @@
 #define vtkMobiusRegistration_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
 #include <string> // For the names
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusRegistration : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusRegistration
+  : public vtkMobiusThreadedPolyDataAlgorithm
 {
 public:
   static vtkMobiusRegistration* New();
-  vtkTypeMacro(vtkMobiusRegistration, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkMobiusRegistration, vtkMobiusThreadedPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -134,12 +135,6 @@ public:
   ///@}
 
   ///@{
-  /** Threads of each threaded stage (0: one per core); the result is the same for any. */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
-  ///@{
   /**
    * The smallest Resolution and ConvergenceTolerance that can register (the stages refuse
    * less), for interfaces that validate before they run (Python's register()).
@@ -153,8 +148,7 @@ protected:
   ~vtkMobiusRegistration() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: mobius::RegistrationParameters (the constructor).
   std::string SourceName = "Source";
@@ -175,7 +169,6 @@ protected:
   bool GeometricPolish;
   int Candidate;
   int OutputGeometry;
-  int NumberOfThreads;
 
 private:
   vtkMobiusRegistration(const vtkMobiusRegistration&) = delete;

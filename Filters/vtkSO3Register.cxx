@@ -4,8 +4,7 @@
 #include "ParallelFor.h"
 #include "SO3Correlation.h"
 #include "ScaleFactorSignal.h"
-#include "vtkDistributedInputs.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -103,18 +102,6 @@ int vtkSO3Register::LargestResolution(double bytes)
   const double n = std::sqrt((bytes - 50e6) / 160.0);
   const int even = 2 * static_cast<int>(std::min(n, 1e9) / 2);
   return std::max(4, even);
-}
-
-//------------------------------------------------------------------------------
-int vtkSO3Register::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
 }
 
 //------------------------------------------------------------------------------
@@ -261,5 +248,4 @@ void vtkSO3Register::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValueMode: " << this->ValueMode << "\n";
   os << indent << "TransformMode: " << this->TransformMode << "\n";
   os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

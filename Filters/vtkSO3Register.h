@@ -41,13 +41,14 @@
 #define vtkSO3Register_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSO3Register : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSO3Register
+  : public vtkMobiusThreadedPolyDataAlgorithm
 {
 public:
   static vtkSO3Register* New();
-  vtkTypeMacro(vtkSO3Register, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSO3Register, vtkMobiusThreadedPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum TransformModes
@@ -130,26 +131,12 @@ public:
   vtkGetMacro(NumberOfCandidates, int);
   ///@}
 
-  ///@{
-  /**
-   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
-   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
-   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
-   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
-   * `NumberOfThreadsUsed` reports the count the filter ran with.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
 protected:
   vtkSO3Register();
   ~vtkSO3Register() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The work of RequestData, which turns an exception thrown here into an error.
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: mobius::RegistrationParameters (the constructor).
   int Resolution;
@@ -157,7 +144,6 @@ protected:
   int ValueMode = 1;
   int TransformMode;
   int NumberOfCandidates;
-  int NumberOfThreads;
 
 private:
   vtkSO3Register(const vtkSO3Register&) = delete;

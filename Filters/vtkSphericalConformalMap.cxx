@@ -5,8 +5,7 @@
 #include "MapDistortion.h"
 #include "MapVerdict.h"
 #include "MeshTopology.h"
-#include "vtkDistributedInputs.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -158,18 +157,6 @@ vtkSphericalConformalMap::vtkSphericalConformalMap()
   this->CenterBetweenSteps = defaults.CenterBetweenSteps;
   this->FillHoles = defaults.FillHoles;
   this->KeepLargestComponent = defaults.KeepLargestComponent;
-}
-
-//------------------------------------------------------------------------------
-int vtkSphericalConformalMap::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
 }
 
 //------------------------------------------------------------------------------

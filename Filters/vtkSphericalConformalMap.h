@@ -68,13 +68,14 @@
 #define vtkSphericalConformalMap_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSphericalConformalMap : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSphericalConformalMap
+  : public vtkMobiusPolyDataAlgorithm
 {
 public:
   static vtkSphericalConformalMap* New();
-  vtkTypeMacro(vtkSphericalConformalMap, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSphericalConformalMap, vtkMobiusPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -209,9 +210,7 @@ protected:
   vtkSphericalConformalMap();
   ~vtkSphericalConformalMap() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The work of RequestData, which turns an exception thrown here into an error.
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double TimeStep = 0.4;
   // Defaults: mobius::RegistrationParameters (the constructor).

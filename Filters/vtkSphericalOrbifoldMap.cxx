@@ -1,17 +1,13 @@
 #include "vtkSphericalOrbifoldMap.h"
 
 #include "SphericalOrbifoldMap.h"
-#include "vtkDistributedInputs.h"
 #include "vtkSphericalConformalMap.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -44,26 +40,6 @@ bool IsSphericalMap(vtkPolyData* input)
     mobius::vtk::CheckOnUnitSphere(points).empty();
 }
 
-// Collects the first error message of an internal filter (without VTK's prefix).
-void CollectError(vtkObject*, unsigned long, void* clientData, void* callData)
-{
-  auto error = static_cast<std::string*>(clientData);
-  std::string text = callData ? static_cast<const char*>(callData) : "";
-  const auto colon = text.find("): ");
-  if (colon != std::string::npos)
-  {
-    text = text.substr(colon + 3);
-  }
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-  {
-    text.pop_back();
-  }
-  if (error->empty())
-  {
-    *error = text;
-  }
-}
-
 void AddIds(vtkFieldData* fieldData, const char* name, const std::vector<vtkIdType>& ids,
   int components = 1)
 {
@@ -82,18 +58,6 @@ void AddIds(vtkFieldData* fieldData, const char* name, const std::vector<vtkIdTy
 
 //------------------------------------------------------------------------------
 vtkSphericalOrbifoldMap::vtkSphericalOrbifoldMap() = default;
-
-//------------------------------------------------------------------------------
-int vtkSphericalOrbifoldMap::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
 
 //------------------------------------------------------------------------------
 int vtkSphericalOrbifoldMap::ComputeOutput(
@@ -138,20 +102,23 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
     vtkNew<vtkSphericalConformalMap> conformal;
     conformal->SetInputData(map);
     std::string error;
-    vtkNew<vtkCallbackCommand> errors;
-    errors->SetCallback(CollectError);
-    errors->SetClientData(&error);
-    vtkNew<vtkCallbackCommand> ignore; // the executive's "returned failure" repeats the error
-    conformal->AddObserver(vtkCommand::ErrorEvent, errors);
-    conformal->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
-    conformal->Update();
-    if (!error.empty() || conformal->GetOutput()->GetNumberOfPoints() == 0)
+    std::vector<std::string> warnings;
+    vtkSmartPointer<vtkPolyData> conformalMap =
+      this->RunInternalFilter(conformal, 0.0, 0.2, error, warnings);
+    for (const auto& warning : warnings)
     {
-      vtkErrorMacro(<< "Cannot compute an orbifold map: conformal map: "
-                    << (error.empty() ? "no output" : error));
+      vtkWarningMacro(<< "conformal map: " << warning);
+    }
+    if (!conformalMap)
+    {
+      if (!this->GetAbortExecute())
+      {
+        vtkErrorMacro(<< "Cannot compute an orbifold map: conformal map: "
+                      << (error.empty() ? "no output" : error));
+      }
       return 0;
     }
-    map->ShallowCopy(conformal->GetOutput());
+    map->ShallowCopy(conformalMap);
   }
   this->UpdateProgress(0.2);
 

@@ -47,13 +47,14 @@
 #define vtkSphericalOrbifoldMap_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSphericalOrbifoldMap : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSphericalOrbifoldMap
+  : public vtkMobiusPolyDataAlgorithm
 {
 public:
   static vtkSphericalOrbifoldMap* New();
-  vtkTypeMacro(vtkSphericalOrbifoldMap, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSphericalOrbifoldMap, vtkMobiusPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -90,9 +91,7 @@ protected:
   vtkSphericalOrbifoldMap();
   ~vtkSphericalOrbifoldMap() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The work of RequestData, which turns an exception thrown here into an error.
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfCopies = 2;
   vtkIdType ConeIds[2] = { -1, -1 };

@@ -2,8 +2,7 @@
 
 #include "ParallelFor.h"
 #include "ScaleFactorSignal.h"
-#include "vtkDistributedInputs.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -135,18 +134,6 @@ vtkNew<vtkDoubleArray> MakeCellArray(const char* name, const std::vector<double>
 vtkSphericalScaleGrid::vtkSphericalScaleGrid() = default;
 
 //------------------------------------------------------------------------------
-int vtkSphericalScaleGrid::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
-
-//------------------------------------------------------------------------------
 int vtkSphericalScaleGrid::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -225,5 +212,4 @@ void vtkSphericalScaleGrid::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
   os << indent << "ValueMode: " << this->ValueMode << "\n";
   os << indent << "DisplaceByValue: " << this->DisplaceByValue << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -36,13 +36,14 @@
 #define vtkSphericalScaleGrid_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSphericalScaleGrid : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSphericalScaleGrid
+  : public vtkMobiusThreadedPolyDataAlgorithm
 {
 public:
   static vtkSphericalScaleGrid* New();
-  vtkTypeMacro(vtkSphericalScaleGrid, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSphericalScaleGrid, vtkMobiusThreadedPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum ValueModes
@@ -95,31 +96,16 @@ public:
   vtkBooleanMacro(DisplaceByValue, vtkTypeBool);
   ///@}
 
-  ///@{
-  /**
-   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
-   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
-   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
-   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
-   * `NumberOfThreadsUsed` reports the count the filter ran with.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
 protected:
   vtkSphericalScaleGrid();
   ~vtkSphericalScaleGrid() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The work of RequestData, which turns an exception thrown here into an error.
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Resolution = 256;
   double SmoothingTime = 5e-4;
   int ValueMode = SQUARE_ROOT_AREA_RATIO;
   vtkTypeBool DisplaceByValue = false;
-  int NumberOfThreads = 0;
 
 private:
   vtkSphericalScaleGrid(const vtkSphericalScaleGrid&) = delete;

@@ -1,13 +1,14 @@
 #include "vtkSurfaceMeshReader.h"
 
-#include "vtkMeshFileChecks.h"
-#include "vtkMeshFileParsers.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusFilterMessages.h"
+
+#include "MobiusMeshFileChecks.h"
+#include "MobiusMeshFileParsers.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkCellArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
@@ -49,25 +50,10 @@ std::string LowerCaseExtension(const std::string& fileName)
   return extension;
 }
 
-// The reason in a VTK error message, without its file, line and object prefixes
-// ("ERROR: In file, line n\nvtkXMLPolyDataReader (0x...): "), as one printable line.
+// The reason in a VTK error message as one printable line.
 std::string VTKMessageReason(const std::string& message)
 {
-  std::string reason = message;
-  if (reason.compare(0, 9, "ERROR: In") == 0 && reason.find('\n') != std::string::npos)
-  {
-    reason = reason.substr(reason.find('\n') + 1);
-  }
-  const auto object = reason.find("): ");
-  if (reason.compare(0, 3, "vtk") == 0 && object != std::string::npos)
-  {
-    reason = reason.substr(object + 3);
-  }
-  while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
-  {
-    reason.pop_back();
-  }
-  return mobius::vtk::PrintableLine(reason);
+  return mobius::vtk::PrintableLine(mobius::vtk::MessageSentence(message));
 }
 
 // An observer keeping the first message it sees in `message`.
@@ -88,10 +74,7 @@ vtkSmartPointer<vtkCallbackCommand> FirstMessageCatcher(std::string* message)
 // Runs a VTK reader, turning its error events into our message.
 std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
 {
-  std::string error;
-  auto catcher = FirstMessageCatcher(&error);
-  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
+  mobius::vtk::FilterMessages messages(reader, /*catchWarnings=*/false);
   // The XML reader's own message for a file it cannot parse is "Error parsing input file.
   // ReadXMLInformation aborting.": the parser's (line, column and what is wrong) says more.
   std::string parserError;
@@ -101,6 +84,8 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
     xml->SetParserErrorObserver(parserCatcher);
   }
   reader->Update();
+  // The executive's "returned failure" only when the reader said nothing itself.
+  const std::string error = messages.Error.empty() ? messages.ExecutiveError : messages.Error;
   auto result = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (error.empty() && result)
   {
@@ -110,7 +95,7 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
   {
     return "the VTK XML file cannot be parsed: " + VTKMessageReason(parserError);
   }
-  return VTKMessageReason(error);
+  return mobius::vtk::PrintableLine(error);
 }
 }
 
@@ -132,22 +117,6 @@ bool vtkSurfaceMeshReader::IsSupportedFile(const char* fileName)
   static const char* supported[] = { "obj", "off", "ply", "stl", "vtp", "vtk" };
   const std::string extension = LowerCaseExtension(fileName ? fileName : "");
   return std::find(std::begin(supported), std::end(supported), extension) != std::end(supported);
-}
-
-//------------------------------------------------------------------------------
-int vtkSurfaceMeshReader::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // No exception may leave the pipeline (in ParaView it would end the application): running
-  // out of memory, or a failure in a worker thread, becomes this filter's error.
-  try
-  {
-    return this->ComputeOutput(request, inputVector, outputVector);
-  }
-  catch (...)
-  {
-    return mobius::vtk::ReportException(this, outputVector, this->FileName ? this->FileName : "");
-  }
 }
 
 //------------------------------------------------------------------------------

@@ -20,15 +20,16 @@
 #define vtkSurfaceMeshReader_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusPolyDataAlgorithm.h"
 
 #include <string>
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSurfaceMeshReader : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSurfaceMeshReader
+  : public vtkMobiusPolyDataAlgorithm
 {
 public:
   static vtkSurfaceMeshReader* New();
-  vtkTypeMacro(vtkSurfaceMeshReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSurfaceMeshReader, vtkMobiusPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -49,9 +50,9 @@ protected:
   vtkSurfaceMeshReader();
   ~vtkSurfaceMeshReader() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  // The work of RequestData, which turns an exception thrown here into an error.
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // An exception's message names the file.
+  std::string ExceptionSubject() override { return this->FileName ? this->FileName : ""; }
 
   char* FileName = nullptr;
 

@@ -4,21 +4,17 @@
 #include "ParallelFor.h"
 #include "SymmetryMeasures.h"
 #include "VertexSnapping.h"
-#include "vtkCorrespondenceOutput.h"
+#include "MobiusCorrespondenceOutput.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
 #include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
 #include "vtkSphericalConformalMap.h"
-#include "vtkDistributedInputs.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -40,82 +36,6 @@ vtkStandardNewMacro(vtkSymmetryDetection);
 namespace
 {
 using Matrix3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
-
-// Runs one stage of the internal pipeline on `input`: its progress becomes a slice
-// [begin, end] of the owner's, the owner's abort stops it, and its error and warning
-// messages are collected (not printed) so that the owner reports them as its own.
-class InternalStage
-{
-public:
-  InternalStage(vtkSymmetryDetection* owner, double begin, double end)
-    : Owner(owner)
-    , Begin(begin)
-    , End(end)
-  {
-  }
-
-  vtkSmartPointer<vtkPolyData> Run(vtkPolyDataAlgorithm* filter)
-  {
-    vtkNew<vtkCallbackCommand> messages;
-    messages->SetClientData(this);
-    messages->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
-      auto stage = static_cast<InternalStage*>(self);
-      std::string text = data ? static_cast<const char*>(data) : "";
-      // VTK prefixes messages with the class and address; keep the sentence.
-      const auto colon = text.find("): ");
-      if (colon != std::string::npos)
-      {
-        text = text.substr(colon + 3);
-      }
-      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-      {
-        text.pop_back();
-      }
-      if (event == vtkCommand::ErrorEvent)
-      {
-        if (stage->Error.empty())
-        {
-          stage->Error = text;
-        }
-      }
-      else
-      {
-        stage->Warnings.push_back(text);
-      }
-    });
-    vtkNew<vtkCallbackCommand> progress;
-    progress->SetClientData(this);
-    progress->SetCallback([](vtkObject* caller, unsigned long, void* self, void* data) {
-      auto stage = static_cast<InternalStage*>(self);
-      const double fraction = data ? *static_cast<double*>(data) : 0.0;
-      stage->Owner->UpdateProgress(stage->Begin + (stage->End - stage->Begin) * fraction);
-      if (stage->Owner->GetAbortExecute())
-      {
-        static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
-      }
-    });
-    vtkNew<vtkCallbackCommand> ignore; // the executive's "returned failure" repeats the error
-    filter->AddObserver(vtkCommand::ErrorEvent, messages);
-    filter->AddObserver(vtkCommand::WarningEvent, messages);
-    filter->AddObserver(vtkCommand::ProgressEvent, progress);
-    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
-    filter->Update();
-    auto output = vtkSmartPointer<vtkPolyData>::New();
-    output->ShallowCopy(filter->GetOutput());
-    if (this->Error.empty() && output->GetNumberOfPoints() == 0 && !this->Owner->GetAbortExecute())
-    {
-      this->Error = "the stage produced no output";
-    }
-    return this->Error.empty() ? output : nullptr;
-  }
-
-  std::string Error;
-  std::vector<std::string> Warnings;
-
-private:
-  vtkSymmetryDetection* Owner;
-  double Begin, End;
-};
 
 // A spherical map carries its surface in `SurfacePoints` and lies on the unit sphere; any
 // other input is a surface mesh still to be mapped.
@@ -159,18 +79,6 @@ vtkSymmetryDetection::vtkSymmetryDetection()
 }
 
 //------------------------------------------------------------------------------
-int vtkSymmetryDetection::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  // The whole surface, also when ParaView splits it over ranks (the result then lives on
-  // rank 0); an empty input gives an empty output (vtkDistributedInputs.h).
-  return mobius::vtk::RequestDataOnWholeInputs(
-    this, inputVector, outputVector, [&](vtkInformationVector** wholeInputs) {
-      return this->ComputeOutput(request, wholeInputs, outputVector);
-    });
-}
-
-//------------------------------------------------------------------------------
 int vtkSymmetryDetection::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -195,15 +103,18 @@ int vtkSymmetryDetection::ComputeOutput(
 
   // Each stage's result, or its error as this filter's.
   auto run = [this](vtkPolyDataAlgorithm* filter, const char* stage, double begin, double end) {
-    InternalStage internal(this, begin, end);
-    vtkSmartPointer<vtkPolyData> result = internal.Run(filter);
-    for (const auto& warning : internal.Warnings)
+    std::string error;
+    std::vector<std::string> warnings;
+    vtkSmartPointer<vtkPolyData> result =
+      this->RunInternalFilter(filter, begin, end, error, warnings);
+    for (const auto& warning : warnings)
     {
       vtkWarningMacro(<< stage << ": " << warning);
     }
     if (!result && !this->GetAbortExecute())
     {
-      vtkErrorMacro(<< "Cannot detect symmetry: " << stage << ": " << internal.Error);
+      vtkErrorMacro(<< "Cannot detect symmetry: " << stage << ": "
+                    << (error.empty() ? "the stage produced no output" : error));
     }
     return this->GetAbortExecute() ? nullptr : result;
   };
@@ -430,5 +341,4 @@ void vtkSymmetryDetection::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BasisSize: " << this->BasisSize << "\n";
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
   os << indent << "SnapTolerance: " << this->SnapTolerance << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -57,13 +57,14 @@
 #define vtkSymmetryDetection_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
-class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSymmetryDetection : public vtkPolyDataAlgorithm
+class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSymmetryDetection
+  : public vtkMobiusThreadedPolyDataAlgorithm
 {
 public:
   static vtkSymmetryDetection* New();
-  vtkTypeMacro(vtkSymmetryDetection, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSymmetryDetection, vtkMobiusThreadedPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -142,24 +143,11 @@ public:
   vtkGetMacro(SnapTolerance, double);
   ///@}
 
-  ///@{
-  /**
-   * Threads for the parallel parts of this filter: 0 (default) is automatic, one per core
-   * this process may run on (its CPU affinity mask: taskset, a cpuset, an MPI launcher's
-   * binding), at most VTK_SMP_MAX_THREADS when that environment variable is set; clamped to
-   * 0..1024. The output is the same, bit for bit, whatever the count. Field data
-   * `NumberOfThreadsUsed` reports the count the filter ran with.
-   */
-  vtkSetClampMacro(NumberOfThreads, int, 0, 1024);
-  vtkGetMacro(NumberOfThreads, int);
-  ///@}
-
 protected:
   vtkSymmetryDetection();
   ~vtkSymmetryDetection() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int ComputeOutput(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   // Defaults: mobius::RegistrationParameters (the constructor).
   bool Centering;
@@ -170,7 +158,6 @@ protected:
   int BasisSize;
   bool GeometricPolish;
   double SnapTolerance = 1e-3;
-  int NumberOfThreads;
 
 private:
   vtkSymmetryDetection(const vtkSymmetryDetection&) = delete;

@@ -1,10 +1,10 @@
-// Joining the pieces of a surface split over ranks (vtkMergePieces.h, which
-// vtkDistributedInputs uses on rank 0): a closed mesh cut in two comes back whole, in its
+// Joining the pieces of a surface split over ranks (MobiusMergePieces.h, which
+// MobiusDistributedInputs uses on rank 0): a closed mesh cut in two comes back whole, in its
 // own point and cell order when the pieces carry global ids, and two vertices of one
 // piece at one position (CGAL's cow has such a pair) stay two; ghost copies of cells are
 // dropped; a piece that refers to a point it lacks is an error, not a crash.
 #include "MobiusTestUtilities.h"
-#include "vtkMergePieces.h"
+#include "Private/MobiusMergePieces.h"
 
 #include "vtkIdTypeArray.h"
 #include "vtkUnsignedCharArray.h"

@@ -30,8 +30,8 @@ void ExpectEqual(const char* what, T actual, T expected)
 
 // Sets `below` and `above` in turn through `set` and expects `get` to come back with the ends
 // of `range`.
-template <typename Filter>
-void ExpectClamp(const char* what, Filter* filter, void (Filter::*set)(int), int (Filter::*get)(),
+template <typename Filter, typename Owner>
+void ExpectClamp(const char* what, Filter* filter, void (Owner::*set)(int), int (Owner::*get)(),
   const mobius::IntegerRange& range)
 {
   (filter->*set)(range.Minimum - 1);

@@ -1,5 +1,5 @@
 /**
- * @file vtkMeshFileParsers.h
+ * @file MobiusMeshFileParsers.h
  * @brief The project's own parsers of OFF, OBJ and STL files (private to the module).
  *
  * VTK's readers of these formats renumber vertices (OBJ), trust indices (OBJ), take an ASCII
@@ -10,8 +10,8 @@
  * The text parsers read the text as NormalizedText gives it: without a UTF-8 byte-order mark,
  * with CR LF and lone CR line endings turned into LF.
  */
-#ifndef vtkMeshFileParsers_h
-#define vtkMeshFileParsers_h
+#ifndef MobiusMeshFileParsers_h
+#define MobiusMeshFileParsers_h
 
 #include <string>
 

@@ -1,5 +1,5 @@
 /**
- * @file vtkSphericalMapData.h
+ * @file MobiusSphericalMapData.h
  * @brief Conversions between vtkPolyData spherical maps and the VTK-free core, and the
  * checks every filter applies to them (private to the module).
  *
@@ -9,8 +9,8 @@
  * area). Each function returns an empty string on success, else a message naming the
  * problem, ready for vtkErrorMacro.
  */
-#ifndef vtkSphericalMapData_h
-#define vtkSphericalMapData_h
+#ifndef MobiusSphericalMapData_h
+#define MobiusSphericalMapData_h
 
 #include "MeshTypes.h"
 

@@ -1,6 +1,6 @@
-#include "vtkCorrespondenceOutput.h"
+#include "MobiusCorrespondenceOutput.h"
 
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"

@@ -1,5 +1,5 @@
 /**
- * @file vtkLaplaceBeltramiBasisData.h
+ * @file MobiusLaplaceBeltramiBasisData.h
  * @brief A surface's Laplace-Beltrami eigenbasis stored on a vtkPolyData, so that it is
  * computed once per surface and reused by every refinement it takes part in (private to the
  * module).
@@ -12,8 +12,8 @@
  *   functions were computed for, so that a basis carried over to another mesh of the same
  *   size, or computed differently, is recognized as foreign.
  */
-#ifndef vtkLaplaceBeltramiBasisData_h
-#define vtkLaplaceBeltramiBasisData_h
+#ifndef MobiusLaplaceBeltramiBasisData_h
+#define MobiusLaplaceBeltramiBasisData_h
 
 #include "LaplaceBeltramiBasis.h"
 #include "MeshTypes.h"

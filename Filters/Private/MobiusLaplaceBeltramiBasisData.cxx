@@ -1,4 +1,4 @@
-#include "vtkLaplaceBeltramiBasisData.h"
+#include "MobiusLaplaceBeltramiBasisData.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"

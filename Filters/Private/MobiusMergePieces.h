@@ -1,7 +1,7 @@
 /**
- * @file vtkMergePieces.h
+ * @file MobiusMergePieces.h
  * @brief Joins the pieces of a surface that was split over processes back into the whole
- * surface (private to the module; vtkDistributedInputs gathers the pieces).
+ * surface (private to the module; MobiusDistributedInputs gathers the pieces).
  *
  * Points that several pieces share (where the surface was cut apart) become one point:
  * - by point global ids (`vtkPointData::GetGlobalIds()`, as ParaView's Generate Global Ids
@@ -19,8 +19,8 @@
  * dropped, and the ghost arrays with them; so is a cell with the same points as a cell of
  * another piece (a copy left unmarked).
  */
-#ifndef vtkMergePieces_h
-#define vtkMergePieces_h
+#ifndef MobiusMergePieces_h
+#define MobiusMergePieces_h
 
 #include "vtkSmartPointer.h"
 

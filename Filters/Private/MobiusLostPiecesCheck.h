@@ -1,7 +1,7 @@
 /**
- * @file vtkLostPiecesCheck.h
+ * @file MobiusLostPiecesCheck.h
  * @brief Refuses pieces that an upstream filter is known to have lost on the way between
- * the ranks (private to the module; vtkDistributedInputs asks it before joining them).
+ * the ranks (private to the module; MobiusDistributedInputs asks it before joining them).
  *
  * ParaView's *Redistribute DataSet* (vtkRedistributeDataSetFilter) sends each rank its
  * cells as VTK XML with raw appended data, and each rank reads them back with VTK's XML
@@ -15,8 +15,8 @@
  * if that fails, the pieces are refused with the reason. D3 (vtkPDistributedDataFilter)
  * sends legacy VTK data and is not affected.
  */
-#ifndef vtkLostPiecesCheck_h
-#define vtkLostPiecesCheck_h
+#ifndef MobiusLostPiecesCheck_h
+#define MobiusLostPiecesCheck_h
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "vtkMeshFileParsers.h"
+#include "MobiusMeshFileParsers.h"
 
 #include "vtkCellArray.h"
 #include "vtkMergePoints.h"

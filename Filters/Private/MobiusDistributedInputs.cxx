@@ -1,8 +1,8 @@
-#include "vtkDistributedInputs.h"
+#include "MobiusDistributedInputs.h"
 
-#include "vtkLostPiecesCheck.h"
-#include "vtkMergePieces.h"
-#include "vtkSphericalMapData.h"
+#include "MobiusLostPiecesCheck.h"
+#include "MobiusMergePieces.h"
+#include "MobiusSphericalMapData.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkDataObject.h"

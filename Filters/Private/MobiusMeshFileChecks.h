@@ -1,5 +1,5 @@
 /**
- * @file vtkMeshFileChecks.h
+ * @file MobiusMeshFileChecks.h
  * @brief Checks of mesh files that must pass before VTK's own reader sees them (private to
  * the module).
  *
@@ -9,8 +9,8 @@
  * whole file (ASCII and both binary encodings, every element and property, lists included)
  * without keeping it, and returns an empty string or the reason the file is bad.
  */
-#ifndef vtkMeshFileChecks_h
-#define vtkMeshFileChecks_h
+#ifndef MobiusMeshFileChecks_h
+#define MobiusMeshFileChecks_h
 
 #include <string>
 

@@ -1,5 +1,5 @@
 /**
- * @file vtkCorrespondenceOutput.h
+ * @file MobiusCorrespondenceOutput.h
  * @brief The output of a dense correspondence, shared by vtkDenseCorrespondence and
  * vtkCorrespondenceRefinement so that both honour one data contract (private to the module).
  *
@@ -10,8 +10,8 @@
  * arrays interpolated, others from the nearest vertex; a name clash gets `_Target`), and the
  * points placed on the target surface or kept on the source surface.
  */
-#ifndef vtkCorrespondenceOutput_h
-#define vtkCorrespondenceOutput_h
+#ifndef MobiusCorrespondenceOutput_h
+#define MobiusCorrespondenceOutput_h
 
 #include "MeshTypes.h"
 

@@ -1,4 +1,4 @@
-#include "vtkMeshFileChecks.h"
+#include "MobiusMeshFileChecks.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "vtkLostPiecesCheck.h"
+#include "MobiusLostPiecesCheck.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkCellType.h"

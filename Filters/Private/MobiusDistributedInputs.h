@@ -1,5 +1,5 @@
 /**
- * @file vtkDistributedInputs.h
+ * @file MobiusDistributedInputs.h
  * @brief How every filter of the module runs when ParaView splits its input over
  * processes (private to the module).
  *
@@ -7,11 +7,11 @@
  * of it has holes where it was cut. When the filter's output is requested as piece p of P
  * and P is the number of processes of the global controller (pvbatch or pvserver over MPI
  * runs every pipeline so, one piece per rank), each input's pieces are gathered on rank
- * 0 and joined (vtkMergePieces.h); rank 0 runs the algorithm on the whole surfaces and
+ * 0 and joined (MobiusMergePieces.h); rank 0 runs the algorithm on the whole surfaces and
  * the other ranks output an empty polydata: **the result lives on rank 0**. All ranks
  * return rank 0's status, so when it fails (a bad mesh) no rank runs the filters
  * downstream, which would wait for it in their own gathers; rank 0 reports the error.
- * Pieces that a filter upstream is known to have lost cells of (vtkLostPiecesCheck.h) are
+ * Pieces that a filter upstream is known to have lost cells of (MobiusLostPiecesCheck.h) are
  * refused so.
  *
  * Any other request (one piece, or one process; also each rank running its own pipelines
@@ -22,8 +22,8 @@
  * and no error, as VTK's filters do: a rank without data, or an upstream filter that
  * produced nothing, is not a failure.
  */
-#ifndef vtkDistributedInputs_h
-#define vtkDistributedInputs_h
+#ifndef MobiusDistributedInputs_h
+#define MobiusDistributedInputs_h
 
 #include <functional>
 

@@ -1,4 +1,4 @@
-#include "vtkSphericalMapData.h"
+#include "MobiusSphericalMapData.h"
 
 #include "MapDistortion.h"
 

@@ -1,4 +1,4 @@
-#include "vtkMergePieces.h"
+#include "MobiusMergePieces.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
