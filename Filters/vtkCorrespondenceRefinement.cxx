@@ -448,8 +448,12 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       }
       polishSeconds = lap();
     }
-    mobius::vtk::AssembleCorrespondence(
+    const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
       inputs[0], inputs[1], locations, this->OutputGeometry == TARGET, output);
+    if (!arrayWarning.empty())
+    {
+      vtkWarningMacro(<< "Target: " << arrayWarning << ".");
+    }
     mobius::vtk::RemoveBasisArrays(output);
 
     vtkFieldData* fieldData = output->GetFieldData();

@@ -114,8 +114,12 @@ int vtkDenseCorrespondence::ComputeOutput(
     clamped += location.Clamped ? 1 : 0;
     maximumClampDistance = std::max(maximumClampDistance, location.AngularDistance);
   }
-  mobius::vtk::AssembleCorrespondence(
+  const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
     inputs[query], inputs[located], map, this->OutputGeometry == TARGET, output);
+  if (!arrayWarning.empty())
+  {
+    vtkWarningMacro(<< (located == 1 ? "Target: " : "Source: ") << arrayWarning << ".");
+  }
 
   mobius::vtk::SetFieldValue(output->GetFieldData(), "ClampedPoints", static_cast<double>(clamped));
   mobius::vtk::SetFieldValue(output->GetFieldData(), "MaximumClampDistance", maximumClampDistance);

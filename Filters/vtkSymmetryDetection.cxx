@@ -255,7 +255,12 @@ int vtkSymmetryDetection::ComputeOutput(
     }
   }
   vtkNew<vtkPolyData> assembled;
-  mobius::vtk::AssembleCorrespondence(reflected, centered, locations, false, assembled);
+  const std::string arrayWarning =
+    mobius::vtk::AssembleCorrespondence(reflected, centered, locations, false, assembled);
+  if (!arrayWarning.empty())
+  {
+    vtkWarningMacro(<< arrayWarning << ".");
+  }
   // The refinement's or dense correspondence's own field data (candidates, residuals).
   vtkFieldData* stageFields = symmetric->GetFieldData();
   for (int a = 0; a < stageFields->GetNumberOfArrays(); ++a)

@@ -12,6 +12,9 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
+#include <string>
+
 namespace mobius
 {
 namespace vtk
@@ -64,11 +67,32 @@ vtkSmartPointer<vtkAbstractArray> Transfer(vtkAbstractArray* source, const Surfa
   }
   return result;
 }
+
+// Values of a floating-point array that are NaN or infinite (0 for other arrays).
+vtkIdType NonFiniteValues(vtkAbstractArray* array)
+{
+  auto data = vtkDataArray::SafeDownCast(array);
+  if (!data || (array->GetDataType() != VTK_FLOAT && array->GetDataType() != VTK_DOUBLE))
+  {
+    return 0;
+  }
+  vtkIdType count = 0;
+  const vtkIdType values = data->GetNumberOfValues();
+  for (vtkIdType k = 0; k < values; ++k)
+  {
+    count += std::isfinite(data->GetComponent(k / data->GetNumberOfComponents(),
+               static_cast<int>(k % data->GetNumberOfComponents())))
+      ? 0
+      : 1;
+  }
+  return count;
+}
 }
 
-void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
+std::string AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
   const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output)
 {
+  std::string warning;
   output->ShallowCopy(queryMesh);
   vtkPointData* outPD = output->GetPointData();
 
@@ -93,6 +117,13 @@ void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
     if (!array->GetName() || std::string(array->GetName()) == SurfacePointsArrayName)
     {
       continue;
+    }
+    const vtkIdType nonFinite = NonFiniteValues(array);
+    if (nonFinite > 0 && warning.empty())
+    {
+      warning = "the point array '" + std::string(array->GetName()) + "' holds " +
+        std::to_string(nonFinite) + " NaN or infinite values, which the map carries over: "
+        "a point mapped next to one of them gets NaN or infinity in that array";
     }
     auto transferred = Transfer(array, locations);
     // The target's InputPointId always gets the suffix: under its own name it would pass
@@ -134,6 +165,7 @@ void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
       ? vtkDataArray::SafeDownCast(mapped)
       : queryMesh->GetPointData()->GetArray(SurfacePointsArrayName));
   output->SetPoints(outputPoints);
+  return warning;
 }
 }
 }

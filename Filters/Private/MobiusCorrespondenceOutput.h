@@ -31,8 +31,11 @@ struct SurfaceLocations
 };
 
 /// Fills `output` as described above. `pointsOnTarget` places the output's points at the
-/// mapped positions, otherwise at the query mesh's own `SurfacePoints`.
-void AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
+/// mapped positions, otherwise at the query mesh's own `SurfacePoints`. Returns a warning
+/// for the filter to give, or an empty string: a floating-point array of the located mesh
+/// that holds NaN or infinite values, which interpolation carries into the output (a NaN
+/// corner makes the mapped value NaN).
+std::string AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
   const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output);
 }
 }

@@ -11,6 +11,7 @@ and no NaN or infinity anywhere in them (and, for a mesh registered with itself,
 vertex mapped onto itself). Never a signal, a hang, a NaN or a partial output.
 
 Usage: test_hostile_inputs.py MOBIUS_REGISTER WORK_FOLDER [TIMEOUT_SECONDS]"""
+import base64
 import itertools
 import math
 import os
@@ -482,6 +483,22 @@ far = ([(1e30, -1e30, 0), *points, (7, 7, 7)], [tuple(i + 1 for i in f) for f in
 for fmt in ("off", "obj", "ply-little", "vtp-ascii"):
     name = write(file_name("unreferenced", fmt), bytes_of(fmt, far))
     expect_result(f"unreferenced vertices {fmt}", name, far[0], sources=range(1, len(points) + 1))
+
+# NaN in a point array of the user's own: carried into the output (the user's data, not
+# ours to change), with a warning that says so.
+values = [0.5] * len(lumpy[0])
+values[7] = math.nan
+encoded = base64.b64encode(struct.pack("<I", 8 * len(values)) + struct.pack("<%dd" % len(values), *values)).decode()
+with_nan = bytes_of("vtp-ascii", lumpy).replace(
+    b"<Points>", b'<PointData>\n<DataArray type="Float64" Name="temperature" format="binary">\n' +
+    encoded.encode() + b"\n</DataArray>\n</PointData>\n<Points>", 1)
+name = write("nan-array.vtp", with_nan)
+arguments, output, code, err = register(name, FAST)
+if check(code == 0, f"{arguments}: exit code {code}: {err!r}"):
+    check("'temperature' holds 1 NaN or infinite values" in err and "warning" in err,
+          f"a NaN in the user's point array: no warning: {err!r}")
+    outcomes.append(("NaN in the user's own point array", "result, warning"))
+
 
 # --- 7. The process's limits. ----------------------------------------------------------------
 # AddressSanitizer reserves terabytes of address space and more stack per frame: the
