@@ -15,6 +15,7 @@
 #include "vtkSurfaceMeshReader.h"
 #include "vtkVersion.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <cmath>
@@ -31,9 +32,35 @@ namespace
 {
 const char* const Program = "mobius-register";
 
+// Messages are one line each, the promise scripts rely on; a file name may hold a line break
+// or other control characters, shown escaped (\n, \t, \xHH).
+std::string OneLine(const std::string& text)
+{
+  std::string line;
+  for (const char c : text)
+  {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte != 0x7f)
+    {
+      line += c;
+    }
+    else if (c == '\n' || c == '\t' || c == '\r')
+    {
+      line += c == '\n' ? "\\n" : c == '\t' ? "\\t" : "\\r";
+    }
+    else
+    {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      line += escaped;
+    }
+  }
+  return line;
+}
+
 int Fail(const std::string& message, int status = 1)
 {
-  std::cerr << Program << ": " << message << std::endl;
+  std::cerr << Program << ": " << OneLine(message) << std::endl;
   return status;
 }
 
@@ -58,8 +85,13 @@ bool ReadMesh(const std::string& path, vtkSmartPointer<vtkPolyData>& mesh, std::
   if (!message.empty() || reader->GetOutput()->GetNumberOfPoints() == 0)
   {
     // The reader's message starts with the file name already; drop VTK's class prefix.
-    const auto start = message.find(path);
-    error = start != std::string::npos ? message.substr(start) : path + ": cannot read the mesh";
+    // A name with line breaks comes back with them joined into spaces.
+    std::string joined = path;
+    std::replace(joined.begin(), joined.end(), '\n', ' ');
+    const auto start = message.find(path), joinedStart = message.find(joined);
+    error = start != std::string::npos ? message.substr(start)
+      : joinedStart != std::string::npos ? path + message.substr(joinedStart + joined.size())
+                                         : path + ": cannot read the mesh";
     return false;
   }
   mesh = reader->GetOutput();
@@ -96,7 +128,7 @@ void PrintWarningsAndTimes(const std::vector<std::string>& warnings, const Pipel
 {
   for (const auto& warning : warnings)
   {
-    std::cerr << Program << ": warning: " << warning << "\n";
+    std::cerr << Program << ": warning: " << OneLine(warning) << "\n";
   }
   double total = 0;
   for (const auto& stage : result.Stages)

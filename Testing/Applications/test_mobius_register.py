@@ -137,6 +137,12 @@ try:
     check(code == 0 and "\ufffd" in json.loads(out)["source"], f"--json with a non-UTF-8 name: {code} {out[:200]!r}")
 except ValueError as invalid:
     check(False, f"--json with a non-UTF-8 name is not JSON: {invalid}: {out[:200]!r}")
+# A file name with a line break: the message stays one line, the name escaped.
+with open(os.path.join(work, "two\nlines.off"), "w") as f:
+    f.write("x")
+code, _, err = run("two\nlines.off", hand, "-o", "newline")
+check(code == 1 and len(err.strip().splitlines()) == 1 and "two\\nlines.off" in err and "OFF header" in err,
+      f"a file name with a line break: {code} {err!r}")
 # VTK's own three lines for an unknown threading backend become one line, none under --quiet.
 bogus = dict(os.environ, VTK_SMP_BACKEND_IN_USE="Bogus")
 code, _, err = run(hand, hand, "-o", "bogus", "--resolution", "32", "--refine", "none", "--quiet", env=bogus)
