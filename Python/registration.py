@@ -100,6 +100,9 @@ def _as_polydata(mesh, name, errors):
     """A file name, a vtkPolyData, or (vertices, faces) arrays, as a vtkPolyData."""
     if isinstance(mesh, (str, bytes, os.PathLike)):
         path = os.fsdecode(mesh)
+        # A C string would end at the NUL: the reader would open another file.
+        if "\0" in path:
+            raise ValueError(f"{name}: the file name {path!r} holds a NUL character")
         reader = errors.watch(vtkSurfaceMeshReader())
         reader.SetFileName(path)
         reader.Update()
@@ -108,8 +111,15 @@ def _as_polydata(mesh, name, errors):
     if isinstance(mesh, vtkPolyData):
         return mesh, name
     if isinstance(mesh, (tuple, list)) and len(mesh) == 2:
-        vertices = np.ascontiguousarray(mesh[0], dtype=np.float64)
-        faces = np.ascontiguousarray(mesh[1], dtype=np.int64)
+        given_vertices, given_faces = np.asarray(mesh[0]), np.asarray(mesh[1])
+        # numpy would drop an imaginary part, and cut 0.7 to vertex 0, without a word.
+        if given_vertices.dtype.kind not in "iuf":
+            raise ValueError(f"{name}: vertices must be real numbers, got {given_vertices.dtype}")
+        if given_faces.dtype.kind not in "iu" and not (
+                given_faces.dtype.kind == "f" and np.array_equal(given_faces, np.round(given_faces))):
+            raise ValueError(f"{name}: faces must be integer vertex numbers, got {given_faces.dtype} values")
+        vertices = np.ascontiguousarray(given_vertices, dtype=np.float64)
+        faces = np.ascontiguousarray(given_faces, dtype=np.int64)
         if vertices.ndim != 2 or vertices.shape[1] != 3:
             raise ValueError(f"{name}: vertices must be an (n, 3) array, got shape {vertices.shape}")
         if faces.ndim != 2 or faces.shape[1] != 3:

@@ -166,4 +166,16 @@ for name, bad in (("resolution", 6), ("resolution", 32.0), ("tolerance", 0), ("t
         assert name in str(error), str(error)
     else:
         raise AssertionError(f"{name}={bad!r} accepted")
+# Meshes that numpy would quietly change: complex vertices, fractional face numbers; a NUL
+# in a file name.
+points_array, faces_array = np.asarray(vertices), np.asarray(faces)
+for label, mesh in (("complex vertices", (points_array.astype(complex), faces_array)),
+                    ("fractional faces", (points_array, faces_array + 0.7)),
+                    ("a NUL in the name", "hand\0.off")):
+    try:
+        register(mesh, hand)
+    except ValueError as error:
+        print(f"{label}: {error}")
+    else:
+        raise AssertionError(f"{label} accepted")
 print("register() checks passed")
