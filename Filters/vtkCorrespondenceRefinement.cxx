@@ -480,8 +480,11 @@ int vtkCorrespondenceRefinement::ComputeOutput(
       fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
     mobius::vtk::SetFieldValue(
       fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
-    const double seconds[4] = { basisSeconds, candidateSeconds, extensionSeconds, polishSeconds };
-    mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 4);
+    if (this->RecordTimings)
+    {
+      const double seconds[4] = { basisSeconds, candidateSeconds, extensionSeconds, polishSeconds };
+      mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 4);
+    }
     const double storedBases[2] = { stored[0] ? 1.0 : 0.0, stored[1] ? 1.0 : 0.0 };
     mobius::vtk::SetFieldValues(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
     mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
@@ -495,6 +498,7 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "BasisSize: " << this->BasisSize << "\n";
+  os << indent << "RecordTimings: " << (this->RecordTimings ? "on" : "off") << "\n";
   os << indent << "StartBasisSize: " << this->StartBasisSize << "\n";
   os << indent << "BasisGrowth: " << this->BasisGrowth << "\n";
   os << indent << "ScreeningBasisSize: " << this->ScreeningBasisSize << "\n";

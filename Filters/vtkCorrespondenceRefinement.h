@@ -50,8 +50,8 @@
  * - `RefinementOrthogonalityResidual`, `RefinementOrientationAgreement` of the final map,
  *   `RefinementOrientationRepaired` (1 if the kept candidate came out mirrored and was
  *   repaired), `RefinementBasisSize`;
- * - `RefinementStageSeconds` (4 values): eigenbases, candidate search, extension to every
- *   vertex, geometric polish (0 when off);
+ * - `RefinementStageSeconds` (4 values, only with RecordTimings): eigenbases, candidate
+ *   search, extension to every vertex, geometric polish (0 when off);
  * - `RefinementStoredBasisUsed` (2 values, source and target): 1 where the input's stored
  *   basis was used;
  * - `NumberOfThreadsUsed`.
@@ -238,6 +238,16 @@ public:
 
   ///@{
   /**
+   * Record the stages' wall-clock seconds in the field data (`RefinementStageSeconds`).
+   * Off by default: timings differ from run to run, and the output would too.
+   */
+  vtkSetMacro(RecordTimings, bool);
+  vtkGetMacro(RecordTimings, bool);
+  vtkBooleanMacro(RecordTimings, bool);
+  ///@}
+
+  ///@{
+  /**
    * Share of the consistent (finite-element) mass matrix blended with the lumped one in the
    * Laplace-Beltrami eigenproblem, 0..1 (0: lumped). See the README's Accuracy section.
    */
@@ -274,6 +284,7 @@ protected:
   bool RepairOrientation = true;
   double ConsistentMassShare = 0.0;
   bool GeometricPolish;
+  bool RecordTimings = false;
   double SphereAnchorWeight = 2.0;
   int CandidateCriterion = CURVATURE;
   int Candidate;

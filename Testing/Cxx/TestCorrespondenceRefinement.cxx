@@ -61,6 +61,7 @@ Maps Register(vtkPolyData* source, vtkPolyData* target, double consistentMassSha
   refinement->SetSourceConnection(registration->GetOutputPort());
   refinement->SetTargetConnection(targetCentered->GetOutputPort());
   refinement->SetConsistentMassShare(consistentMassShare);
+  refinement->RecordTimingsOn(); // PolishSeconds reads them
   correspondence->Update();
   refinement->Update();
   Maps maps;
@@ -72,6 +73,7 @@ Maps Register(vtkPolyData* source, vtkPolyData* target, double consistentMassSha
     unpolished->SetSourceConnection(registration->GetOutputPort());
     unpolished->SetTargetConnection(targetCentered->GetOutputPort());
     unpolished->SetGeometricPolish(false);
+    unpolished->RecordTimingsOn();
     unpolished->Update();
     maps.Unpolished = unpolished->GetOutput();
   }

@@ -89,7 +89,8 @@ unpolished = register(hand, (bent, faces), resolution=128, polish=False)
 unpolished_error = np.linalg.norm(unpolished.mapped_points - bent, axis=1).mean() / scale
 print(f"refined map without the geometric polish: mean error {unpolished_error:.4f} of sqrt(area)")
 assert unpolished_error < 0.03 and not np.allclose(unpolished.mapped_points, result.mapped_points)
-assert np.ravel(unpolished.fields["RefinementStageSeconds"])[3] == 0 < np.ravel(result.fields["RefinementStageSeconds"])[3]
+# No wall-clock timings in the output (RecordTimings off): the same result in every run.
+assert "RefinementStageSeconds" not in result.fields
 
 # The Möbius map alone (vtkDenseCorrespondence), from a vtkPolyData: coarser than refined.
 mobius = register(hand_polydata, (bent, faces), resolution=128, refine=False)
