@@ -29,8 +29,16 @@ def expect_equal(what, actual, expected):
 # 1. The plugin's XML against the filters.
 xml_dir = os.environ["MOBIUS_PLUGIN_XML_DIR"]
 checked = 0
-for path in sorted(glob.glob(os.path.join(xml_dir, "*.xml"))):
-    for proxy in ElementTree.parse(path).getroot().iter("SourceProxy"):
+# The XMLs as the plugin is built from them: a template (NAME.xml.in) gets the properties
+# the filters share (xml/Shared) where CMake puts them.
+with open(os.path.join(xml_dir, "Shared", "NumberOfThreads.xml")) as f:
+    shared = {"@MOBIUS_NUMBER_OF_THREADS_PROPERTY@": f.read()}
+for path in sorted(glob.glob(os.path.join(xml_dir, "*.xml")) + glob.glob(os.path.join(xml_dir, "*.xml.in"))):
+    with open(path) as f:
+        text = f.read()
+    for placeholder, snippet in shared.items():
+        text = text.replace(placeholder, snippet)
+    for proxy in ElementTree.fromstring(text).iter("SourceProxy"):
         filter_class = getattr(filters, proxy.get("class"), None)
         if filter_class is None:
             failures.append(f"{os.path.basename(path)}: no class {proxy.get('class')}")
