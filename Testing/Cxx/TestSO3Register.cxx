@@ -155,7 +155,8 @@ int TestBadInputs()
 {
   int failures = 0;
   auto map = CenteredBumpyMap();
-  failures += ExpectError(map, map, 31, "even and at least 4");
+  failures += ExpectError(map, map, 31, "even and at least 8");
+  failures += ExpectError(map, map, 6, "even and at least 8"); // 4 and 6 mapped rotated copies wrongly
   // Too large for any machine: refused before allocating, saying what would fit.
   MOBIUS_EXPECT(vtkSO3Register::LargestResolution(1e9) < 4000);
   MOBIUS_EXPECT(vtkSO3Register::EstimateMemory(vtkSO3Register::LargestResolution(1e9)) <= 1e9);
