@@ -1,6 +1,7 @@
 #include "vtkSO3Register.h"
 
 #include "RegistrationParameters.h"
+#include "MirrorCheck.h"
 #include "ParallelFor.h"
 #include "SO3Correlation.h"
 #include "ScaleFactorSignal.h"
@@ -203,6 +204,19 @@ int vtkSO3Register::ComputeOutput(
     vtkErrorMacro(<< "Cannot register: the correlation found no peak (are both signals zero?).");
     return 0;
   }
+  const double otherError = this->TransformMode == ROTATIONS_AND_REFLECTIONS || !this->CheckMirroring
+    ? -1.0
+    : mobius::OtherDeterminantRegistrationError(
+        signals[0].Coefficients, signals[1].Coefficients, options);
+  if (mobius::OtherDeterminantFitsFarBetter(result.RegistrationError, otherError))
+  {
+    vtkWarningMacro(<< (this->TransformMode == ROTATIONS
+                           ? "The shapes look mirrored: a reflection aligns them far better ("
+                           : "The shapes look the same way round: a rotation aligns them far better (")
+                    << "registration error " << otherError << " against " << result.RegistrationError
+                    << "); set TransformMode to "
+                    << (this->TransformMode == ROTATIONS ? "REFLECTIONS" : "ROTATIONS") << ".");
+  }
 
   output->ShallowCopy(source);
   for (Eigen::Index i = 0; i < sourcePoints.rows(); ++i)
@@ -218,6 +232,7 @@ int vtkSO3Register::ComputeOutput(
   mobius::vtk::SetFieldValues(fieldData, "EulerAngles", result.EulerAngles.data(), 3);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationScore", result.Score);
   mobius::vtk::SetFieldValue(fieldData, "RegistrationError", result.RegistrationError);
+  mobius::vtk::SetFieldValue(fieldData, "OtherDeterminantRegistrationError", otherError);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationCoefficient", result.CorrelationCoefficient);
   mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationBandwidth", result.CorrelationBandwidth);
@@ -243,6 +258,7 @@ int vtkSO3Register::ComputeOutput(
 void vtkSO3Register::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "CheckMirroring: " << (this->CheckMirroring ? "on" : "off") << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
   os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
   os << indent << "ValueMode: " << this->ValueMode << "\n";

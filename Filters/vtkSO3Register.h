@@ -131,6 +131,19 @@ public:
   vtkGetMacro(NumberOfCandidates, int);
   ///@}
 
+  ///@{
+  /**
+   * With TransformMode ROTATIONS or REFLECTIONS, also find the best transform of the other
+   * kind by a cheap coarse search (`OtherDeterminantRegistrationError` in the field data),
+   * and warn when it aligns the shapes far better: a mirrored pair registered by rotations
+   * (or the same way round by reflections) gives a wrong map otherwise without a word. On by
+   * default; off for a mesh registered with itself on purpose (symmetry detection).
+   */
+  vtkSetMacro(CheckMirroring, bool);
+  vtkGetMacro(CheckMirroring, bool);
+  vtkBooleanMacro(CheckMirroring, bool);
+  ///@}
+
 protected:
   vtkSO3Register();
   ~vtkSO3Register() override = default;
@@ -144,6 +157,7 @@ protected:
   int ValueMode = 1;
   int TransformMode;
   int NumberOfCandidates;
+  bool CheckMirroring = true;
 
 private:
   vtkSO3Register(const vtkSO3Register&) = delete;

@@ -160,6 +160,7 @@ int vtkSymmetryDetection::ComputeOutput(
   registration->SetSmoothingTime(this->SmoothingTime);
   registration->SetNumberOfCandidates(this->NumberOfCandidates);
   registration->SetTransformModeToReflections();
+  registration->CheckMirroringOff(); // the mesh against itself: the identity always fits best
   registration->SetNumberOfThreads(threads);
   vtkSmartPointer<vtkPolyData> reflected = run(registration, "reflective registration", 0.35, 0.5);
   if (!reflected)

@@ -86,8 +86,14 @@ class _Errors:
         self.warnings.append(str(message).split("): ", 1)[-1].strip() if message else "warning")
     _record_warning.CallDataType = "string0"
 
+    # The filters' hints name their properties; here, register()'s options.
+    _HINTS = (("set TransformMode to REFLECTIONS", 'pass transform="reflection"'),
+              ("set TransformMode to ROTATIONS", 'pass transform="rotation"'))
+
     def warn(self):
         for message in self.warnings:
+            for property_words, option_words in self._HINTS:
+                message = message.replace(property_words, option_words)
             warnings.warn(message, stacklevel=3)
         self.warnings = []
 
