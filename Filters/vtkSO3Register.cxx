@@ -204,17 +204,18 @@ int vtkSO3Register::ComputeOutput(
     vtkErrorMacro(<< "Cannot register: the correlation found no peak (are both signals zero?).");
     return 0;
   }
-  const double otherError = this->TransformMode == ROTATIONS_AND_REFLECTIONS || !this->CheckMirroring
-    ? -1.0
-    : mobius::OtherDeterminantRegistrationError(
-        signals[0].Coefficients, signals[1].Coefficients, options);
-  if (mobius::OtherDeterminantFitsFarBetter(result.RegistrationError, otherError))
+  mobius::MirrorCheck mirroring;
+  if (this->CheckMirroring)
+  {
+    mirroring = mobius::CheckMirroring(signals[0].Coefficients, signals[1].Coefficients, options);
+  }
+  if (mirroring.OtherFitsFarBetter)
   {
     vtkWarningMacro(<< (this->TransformMode == ROTATIONS
                            ? "The shapes look mirrored: a reflection aligns them far better ("
                            : "The shapes look the same way round: a rotation aligns them far better (")
-                    << "registration error " << otherError << " against " << result.RegistrationError
-                    << "); set TransformMode to "
+                    << "registration error " << std::max(0.0, mirroring.OtherError) << " against "
+                    << mirroring.ChosenError << " in a coarse search); set TransformMode to "
                     << (this->TransformMode == ROTATIONS ? "REFLECTIONS" : "ROTATIONS") << ".");
   }
 
@@ -232,7 +233,8 @@ int vtkSO3Register::ComputeOutput(
   mobius::vtk::SetFieldValues(fieldData, "EulerAngles", result.EulerAngles.data(), 3);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationScore", result.Score);
   mobius::vtk::SetFieldValue(fieldData, "RegistrationError", result.RegistrationError);
-  mobius::vtk::SetFieldValue(fieldData, "OtherDeterminantRegistrationError", otherError);
+  const double coarseErrors[2] = { mirroring.ChosenError, mirroring.OtherError };
+  mobius::vtk::SetFieldValues(fieldData, "MirrorCheckErrors", coarseErrors, 2);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationCoefficient", result.CorrelationCoefficient);
   mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationBandwidth", result.CorrelationBandwidth);

@@ -134,7 +134,7 @@ public:
   ///@{
   /**
    * With TransformMode ROTATIONS or REFLECTIONS, also find the best transform of the other
-   * kind by a cheap coarse search (`OtherDeterminantRegistrationError` in the field data),
+   * kind by a cheap coarse search (`MirrorCheckErrors` in the field data),
    * and warn when it aligns the shapes far better: a mirrored pair registered by rotations
    * (or the same way round by reflections) gives a wrong map otherwise without a word. On by
    * default; off for a mesh registered with itself on purpose (symmetry detection).

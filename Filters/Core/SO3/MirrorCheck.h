@@ -15,16 +15,22 @@
 
 namespace mobius
 {
-/// The registration error of the best transform of the determinant that `options` leaves out
-/// (reflections for RotationsOnly, rotations for ReflectionsOnly), from a coarse search (one
-/// candidate, a grid of bandwidth 16) refined as the registration refines; -1 for mode Both.
-double OtherDeterminantRegistrationError(const SphericalHarmonicCoefficients& source,
-  const SphericalHarmonicCoefficients& target, const SO3CorrelationOptions& options);
+struct MirrorCheck
+{
+  /// Registration errors of the best transform of the kind searched and of the other kind,
+  /// both from the same coarse search; -1 when not checked (mode Both).
+  double ChosenError = -1.0;
+  double OtherError = -1.0;
+  /// The other kind's error is below half the chosen kind's and at least 0.01 lower (a nearly
+  /// symmetric shape, such as the cow, fits both ways almost equally well, and either map is
+  /// right up to its symmetry).
+  bool OtherFitsFarBetter = false;
+};
 
-/// The other determinant fits far better: its error is below half the chosen transform's and
-/// at least 0.01 lower (a nearly symmetric shape, such as the cow, fits both ways almost
-/// equally well, and either map is right up to its symmetry).
-bool OtherDeterminantFitsFarBetter(double chosenError, double otherError);
+/// Both kinds' best fits by a coarse search (one candidate each, a grid of bandwidth 16,
+/// polished on that band-limited correlation), for the options' mode; nothing for mode Both.
+MirrorCheck CheckMirroring(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, const SO3CorrelationOptions& options);
 }
 
 #endif
