@@ -360,7 +360,7 @@ written_as = {
         for k, line in enumerate(off_text.split("\n"))), points),
     "off: nOFF of dimension 3": ("noff.off", off_text.replace("OFF\n", "nOFF\n3\n", 1), points),
     "off: 4OFF (homogeneous)": ("4off.off", "4OFF\n" + off_text.split("\n", 1)[1].replace(
-        "\n", " 2\n", len(points) + 1).replace(" 0 2\n", " 0\n", 1), None),
+        "\n", " 2\n", len(points) + 1).replace(" 0 2\n", " 0\n", 1), [tuple(c / 2 for c in p) for p in points]),
     "off: COFF, colors after the coordinates and the faces": ("coff.off", "COFF\n" + "\n".join(
         line + (" 0.5 0.5 0.5 1" if k > 0 else "") for k, line in enumerate(off_text.split("\n")[1:-1])) + "\n", points),
 }
