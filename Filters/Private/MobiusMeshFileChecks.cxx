@@ -903,12 +903,6 @@ std::string CheckLegacySections(const std::string& fileName)
   return {};
 }
 
-std::string CheckSTLFile(const std::string& fileName)
-{
-  long long triangles = 0, trailingBytes = 0;
-  return CheckSTLFile(fileName, triangles, trailingBytes);
-}
-
 std::string CheckSTLFile(const std::string& fileName, long long& triangles, long long& trailingBytes)
 {
   triangles = -1;

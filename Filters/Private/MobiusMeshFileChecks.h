@@ -55,9 +55,8 @@ std::string CheckLegacySections(const std::string& fileName);
 /// Fails when a binary STL file's triangle count claims more 50-byte triangles than the file
 /// holds: VTK's STL reader allocates the claim (2e9 triangles end the program in
 /// vtkCellArray::AllocateExact). ASCII STL files (text from "solid" on) pass.
-std::string CheckSTLFile(const std::string& fileName);
-/// The same, and for a binary file the triangles its header counts and the bytes that
-/// follow them (-1 and 0 for an ASCII file).
+/// For a binary file, `triangles` is the count its header gives and `trailingBytes` the
+/// bytes after them (-1 and 0 for an ASCII file).
 std::string CheckSTLFile(const std::string& fileName, long long& triangles, long long& trailingBytes);
 }
 }
