@@ -128,7 +128,13 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   const StageProgress& progress)
 {
   const auto started = std::chrono::steady_clock::now();
-  vtkPolyData* inputs[2] = { source, target };
+  // The target's job reads a copy of its own: the two meshes may share arrays (one mesh given
+  // as both inputs, or a vtkTransformFilter's output, which shares its input's cells), and
+  // VTK reads and builds some state inside an array or a mesh (a cell array's traversal
+  // cursor, a mesh's cell structures), which two threads must not do at once.
+  vtkNew<vtkPolyData> targetCopy;
+  targetCopy->DeepCopy(target);
+  vtkPolyData* inputs[2] = { source, targetCopy };
   const std::string names[2] = { sourceName, targetName };
   vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
   vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
@@ -161,14 +167,11 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
     return RunStage(center, std::string("centering (") + which[k] + ")", names[k],
       sharedProgress, parts[k], *centered[k], errors[k]);
   };
-  // One mesh given as both inputs is mapped twice in turn: VTK builds a mesh's cell
-  // structures lazily on first read, so two filters may not read it at once.
-  const bool sideBySide = source != target;
   bool ok[2] = { false, false };
   // In turn (one thread) the target is not mapped after the source failed. ParallelFor
   // carries an exception of either job here once both are done.
-  mobius::ParallelFor(2, sideBySide ? threads : 1, [&](int k, int) {
-    if (k == 0 || sideBySide || ok[0])
+  mobius::ParallelFor(2, threads, [&](int k, int) {
+    if (k == 0 || threads > 1 || ok[0])
     {
       ok[k] = mapAndCenter(k);
     }

@@ -6,6 +6,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -17,6 +18,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -101,9 +103,14 @@ std::string ExtractTriangles(vtkPolyData* input, Triangles& triangles)
   triangles.resize(polys->GetNumberOfCells(), 3);
   vtkIdType npts = 0;
   const vtkIdType* ids = nullptr;
+  // An iterator of our own, not the cell array's InitTraversal/GetNextCell: that cursor
+  // lives in the array, which two meshes may share (a vtkTransformFilter's output shares its
+  // input's cells), and the registration pipeline maps both meshes at once.
+  auto cells = ::vtk::TakeSmartPointer(polys->NewIterator());
   vtkIdType t = 0;
-  for (polys->InitTraversal(); polys->GetNextCell(npts, ids); ++t)
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++t)
   {
+    cells->GetCurrentCell(npts, ids);
     if (npts != 3)
     {
       std::ostringstream error;
