@@ -1,5 +1,6 @@
 #include "CommandLine.h"
 
+#include "ParameterRules.h"
 #include "vtkSO3Register.h"
 
 #include <cmath>
@@ -74,46 +75,46 @@ Option PipelineFlag(const std::string& name, const std::string& help,
     true };
 }
 
-// An option of the job taking an integer in [minimum, maximum]; `range` says which in the
-// error message ("a positive integer", "an integer from 2 to 500").
+// An option of the job taking an integer. Its allowed values are checked with the others
+// once every option is read (CheckRegistrationParameters), as Python and the filters do.
 Option PipelineInteger(const std::string& name, const std::string& label, const std::string& help,
-  int PipelineOptions::*member, int minimum, int maximum, const std::string& range)
+  int PipelineOptions::*member)
 {
   return { { name }, label, help, 1,
     [=](const Values& values, CommandLine& line, std::string& error) {
-      int number = 0;
-      if (!ParseInteger(values[0], number) || number < minimum || number > maximum)
+      if (!ParseInteger(values[0], line.Pipeline.*member))
       {
-        error = name + " needs " + range + ", not '" + values[0] + "'";
+        error = name + " needs an integer, not '" + values[0] + "'";
         return false;
       }
-      line.Pipeline.*member = number;
       return true;
     },
     true };
 }
 
+// A range as --help gives it: "2 to 500".
 std::string IntegerRangeWords(const mobius::IntegerRange& range)
 {
-  return "an integer from " + std::to_string(range.Minimum) + " to " + std::to_string(range.Maximum);
+  return std::to_string(range.Minimum) + " to " + std::to_string(range.Maximum);
 }
 
-// An option of the job taking a number from 0 to 1. NaN passes every comparison and an
-// infinite or huge smoothing time wipes out the signals (exp(-l(l+1) t) leaves nothing of
-// degree 1 and up well before t = 1): the run would silently return garbage. A relative
-// change above 1 is no tolerance either.
-Option PipelineFraction(const std::string& name, const std::string& label, const std::string& help,
-  double PipelineOptions::*member, double minimum = 0.0)
+std::string NumberRangeWords(const mobius::NumberRange& range)
+{
+  return Format(range.Minimum) + " to " + Format(range.Maximum);
+}
+
+// An option of the job taking a number (checked as PipelineInteger's are; NaN and
+// infinities are read as numbers and refused there).
+Option PipelineNumber(const std::string& name, const std::string& label, const std::string& help,
+  double PipelineOptions::*member)
 {
   return { { name }, label, help, 1,
     [=](const Values& values, CommandLine& line, std::string& error) {
-      double number = 0;
-      if (!ParseNumber(values[0], number) || !std::isfinite(number) || number < minimum || number > 1)
+      if (!ParseNumber(values[0], line.Pipeline.*member))
       {
-        error = name + " needs a number from " + Format(minimum) + " to 1, not '" + values[0] + "'";
+        error = name + " needs a number, not '" + values[0] + "'";
         return false;
       }
-      line.Pipeline.*member = number;
       return true;
     },
     true };
@@ -168,18 +169,12 @@ Option FileName(const std::vector<std::string>& names, const std::string& label,
 bool SetResolution(const Values& values, CommandLine& line, std::string& error)
 {
   int number = 0;
-  if (!ParseInteger(values[0], number) || number < 1)
+  if (!ParseInteger(values[0], number))
   {
-    error = "--resolution needs a positive integer, not '" + values[0] + "'";
+    error = "--resolution needs an integer, not '" + values[0] + "'";
     return false;
   }
-  if (number < mobius::MinimumResolution || number % 2 != 0)
-  {
-    error = "--resolution must be even and at least " + std::to_string(mobius::MinimumResolution) +
-      ", not " + values[0];
-    return false;
-  }
-  // Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
+  // Even and large enough: CheckRegistrationParameters. Said now, not after minutes of conformal maps (vtkSO3Register checks it too).
   if (number > vtkSO3Register::LargestResolution())
   {
     std::ostringstream message;
@@ -244,8 +239,6 @@ const std::vector<Option>& Options()
 {
   static const std::vector<Option> options = [] {
     const PipelineOptions defaults;
-    const std::string maximum = std::to_string(std::numeric_limits<int>::max());
-    const int largest = std::numeric_limits<int>::max();
     std::vector<Option> table = {
       Heading("Outputs (existing files are kept unless --force):"),
       FileName({ "-o", "--output" }, "-o, --output OUT",
@@ -297,11 +290,11 @@ const std::vector<Option>& Options()
       Heading("\nConformal map:"),
       PipelineInteger("--iterations", "--iterations N",
         "maximum flow steps (default " + std::to_string(defaults.FlowIterations) + ")",
-        &PipelineOptions::FlowIterations, 1, largest, "a positive integer"),
-      PipelineFraction("--tolerance", "--tolerance T",
-        "flow convergence tolerance, " + Format(mobius::MinimumFlowTolerance) + " to 1 (default " +
-          Format(defaults.FlowTolerance) + ")",
-        &PipelineOptions::FlowTolerance, mobius::MinimumFlowTolerance),
+        &PipelineOptions::FlowIterations),
+      PipelineNumber("--tolerance", "--tolerance T",
+        "flow convergence tolerance, " + NumberRangeWords(mobius::FlowToleranceRange) +
+          " (default " + Format(defaults.FlowTolerance) + ")",
+        &PipelineOptions::FlowTolerance),
       PipelineFlag("--no-center-flow", "plain CMCF: no Moebius centering between flow steps",
         &PipelineOptions::CenterBetweenSteps, false),
       PipelineFlag("--fill-holes", "close holes instead of rejecting open meshes",
@@ -315,41 +308,39 @@ const std::vector<Option>& Options()
         "refinement failed)",
         &PipelineOptions::AllowPoorMaps, true),
       Heading("Centering:"),
-      // vtkMobiusCenter clamps its Degree to this range; a value outside is refused, not clamped.
       PipelineInteger("--degree", "--degree L",
-        "centering degree for both meshes, " + std::to_string(mobius::CenteringDegreeRange.Minimum) +
-          " to " + std::to_string(mobius::CenteringDegreeRange.Maximum) + " (default " +
+        "centering degree for both meshes, " + IntegerRangeWords(mobius::CenteringDegreeRange) +
+          " (default " +
           std::to_string(defaults.CenteringDegree) +
           "):\n"
           "1 is the paper's Moebius centering (conformal); 2..8 go on\n"
           "to its generalized centering (Section 5, Figure 5): no\n"
           "area moments of spherical-harmonic degree 1..L, area spread\n"
           "more evenly at the cost of conformality",
-        &PipelineOptions::CenteringDegree, mobius::CenteringDegreeRange.Minimum,
-        mobius::CenteringDegreeRange.Maximum,
-        "an integer from 1 (the paper's Moebius centering) to " +
-          std::to_string(mobius::CenteringDegreeRange.Maximum)),
+        &PipelineOptions::CenteringDegree),
       Heading("Registration:"),
       { { "--resolution" }, "--resolution N",
-        "scale-factor grid size, even, as memory allows (default " +
+        "scale-factor grid size, even, from " + std::to_string(mobius::MinimumResolution) +
+          " as memory allows\n(default " +
           std::to_string(defaults.Resolution) + ")",
         1, SetResolution, true },
-      PipelineFraction("--smoothing", "--smoothing T",
-        "heat-kernel smoothing time, 0 to 1 (default " + Format(defaults.SmoothingTime) + ")",
+      PipelineNumber("--smoothing", "--smoothing T",
+        "heat-kernel smoothing time, " + NumberRangeWords(mobius::SmoothingTimeRange) +
+          " (default " + Format(defaults.SmoothingTime) + ")",
         &PipelineOptions::SmoothingTime),
       PipelineChoice("--transform", "--transform MODE",
         "rotation | reflection | both (default rotation)", { "rotation", "reflection", "both" },
         [](PipelineOptions& pipeline, int mode) { pipeline.TransformMode = mode; }),
       PipelineInteger("--candidates", "--candidates K",
-        "correlation peaks to report (default " + std::to_string(defaults.NumberOfCandidates) + ")",
-        &PipelineOptions::NumberOfCandidates, 1, largest, "a positive integer"),
+        "correlation peaks to report, " + IntegerRangeWords(mobius::CandidateCountRange) +
+          " (default " + std::to_string(defaults.NumberOfCandidates) + ")",
+        &PipelineOptions::NumberOfCandidates),
       PipelineInteger("--candidate", "--candidate K",
         "keep the refinement's map from candidate K (0..K-1 of\n"
         "--candidates; 0 the best peak) instead of the one it\n"
         "chooses: for a map that came out turned or mirrored\n"
         "while a warning named a near-equal runner-up",
-        &PipelineOptions::Candidate, 0, mobius::CandidateRange.Maximum,
-        IntegerRangeWords({ 0, mobius::CandidateRange.Maximum })),
+        &PipelineOptions::Candidate),
       Heading("Correspondence:"),
       PipelineChoice("--refine", "--refine METHOD",
         "spectral | none: refine the Moebius map (ZoomOut on the\n"
@@ -358,9 +349,9 @@ const std::vector<Option>& Options()
         { "spectral", "none" },
         [](PipelineOptions& pipeline, int method) { pipeline.Refine = method == 0; }),
       PipelineInteger("--basis-size", "--basis-size K",
-        "eigenfunctions of the refinement (default " + std::to_string(defaults.BasisSize) + ")",
-        &PipelineOptions::BasisSize, mobius::BasisSizeRange.Minimum,
-        mobius::BasisSizeRange.Maximum, IntegerRangeWords(mobius::BasisSizeRange)),
+        "eigenfunctions of the refinement, " + IntegerRangeWords(mobius::BasisSizeRange) +
+          " (default " + std::to_string(defaults.BasisSize) + ")",
+        &PipelineOptions::BasisSize),
       PipelineFlag("--no-polish",
         "keep the spectral map: no geometric polish (ARAP\n"
         "non-rigid ICP of the source onto the target) after it",
@@ -370,16 +361,14 @@ const std::vector<Option>& Options()
         [](PipelineOptions& pipeline, int geometry) { pipeline.OutputGeometry = geometry; }),
       Heading("Other:"),
       PipelineInteger("--threads", "--threads N",
-        "threads per threaded stage, " + std::to_string(mobius::ThreadCountRange.Minimum) +
-          " to " + std::to_string(mobius::ThreadCountRange.Maximum) +
+        "threads per threaded stage, " + IntegerRangeWords(mobius::ThreadCountRange) +
           "; 0: one per core\n"
           "this process may use (CPU affinity), at most\n"
           "VTK_SMP_MAX_THREADS if set (default " +
           std::to_string(defaults.NumberOfThreads) +
           "); results are the\n"
           "same for any N",
-        &PipelineOptions::NumberOfThreads, mobius::ThreadCountRange.Minimum,
-        mobius::ThreadCountRange.Maximum, IntegerRangeWords(mobius::ThreadCountRange)),
+        &PipelineOptions::NumberOfThreads),
       Flag({ "--force" }, "--force", "overwrite existing output files", &CommandLine::Force),
       Flag({ "--quiet" }, "--quiet", "no progress or warnings", &CommandLine::Quiet),
       Flag({ "--json" }, "--json", "print a machine-readable summary on standard output",
@@ -430,6 +419,11 @@ bool ApplyOption(const Option& option, int argc, char* argv[], int& i, CommandLi
 bool CheckCombination(
   CommandLine& commandLine, const std::vector<std::string>& positional, std::string& error)
 {
+  error = mobius::CheckRegistrationParameters(commandLine.Pipeline, mobius::ParameterNaming::CommandLine);
+  if (!error.empty())
+  {
+    return false;
+  }
   // Symmetry detection and the orbifold map center with the Möbius centering only.
   if (commandLine.Pipeline.CenteringDegree != 1 &&
     (commandLine.OrbifoldCopies > 0 || commandLine.Symmetry))
@@ -474,13 +468,6 @@ bool CheckCombination(
     if (!commandLine.Pipeline.Centering)
     {
       error = "--no-centering is for --symmetry only";
-      return false;
-    }
-    if (commandLine.Pipeline.Candidate >= commandLine.Pipeline.NumberOfCandidates)
-    {
-      error = "--candidate " + std::to_string(commandLine.Pipeline.Candidate) +
-        " names no candidate: there are " +
-        std::to_string(commandLine.Pipeline.NumberOfCandidates) + " (--candidates), numbered from 0";
       return false;
     }
     if (positional.empty())

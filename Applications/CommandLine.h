@@ -25,13 +25,15 @@ struct CommandLine
 };
 
 /// Parses argv. Returns false with `error` for unknown options, missing values or values
-/// out of range.
+/// out of range (mobius::CheckRegistrationParameters).
 bool ParseCommandLine(int argc, char* argv[], CommandLine& commandLine, std::string& error);
 
 /// Parses the pipeline option at argv[i] (conformal map, centering degree, registration,
 /// refinement, --threads), advancing i past its value: the options mobius-register and
 /// mobius-score's dataset mode share. `recognized` is false for any other argument (then
-/// nothing is read). Returns false with `error` for a missing value or one out of range.
+/// nothing is read). Returns false with `error` for a missing value or one that is not a
+/// number; the caller checks the ranges once every option is read
+/// (mobius::CheckRegistrationParameters).
 bool ParsePipelineOption(
   int argc, char* argv[], int& i, PipelineOptions& pipeline, bool& recognized, std::string& error);
 

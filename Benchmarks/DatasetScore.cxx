@@ -6,6 +6,7 @@
 #include "PairScore.h"
 #include "RegistrationPipeline.h"
 #include "ScoreInput.h"
+#include "ParameterRules.h"
 #include "VTKMessages.h"
 
 #include "vtkDataArray.h"
@@ -174,6 +175,12 @@ int ParseOptions(int argc, char* argv[], DatasetOptions& options)
         (argument[0] == '-' ? "unknown option " : "unexpected argument ") + argument +
         " with --dataset");
     }
+  }
+  const std::string outOfRange =
+    mobius::CheckRegistrationParameters(options.Pipeline, mobius::ParameterNaming::CommandLine);
+  if (!outOfRange.empty())
+  {
+    return UsageError(outOfRange);
   }
   if (options.PairsPath.empty() && !options.AllPairs && options.RandomCount == 0)
   {

@@ -1,6 +1,7 @@
 #include "vtkMobiusRegistration.h"
 
 #include "MobiusPipeline.h"
+#include "ParameterRules.h"
 #include "RegistrationParameters.h"
 
 #include "vtkAbstractArray.h"
@@ -37,6 +38,30 @@ void AddStageFields(vtkFieldData* fields, const std::string& prefix, vtkPolyData
     copy->SetName((prefix + array->GetName()).c_str());
     fields->AddArray(copy);
   }
+}
+
+// The filter's properties, as the pipeline takes them.
+mobius::RegistrationParameters ParametersOf(vtkMobiusRegistration* filter)
+{
+  mobius::RegistrationParameters options;
+  options.FillHoles = filter->GetFillHoles();
+  options.KeepLargestComponent = filter->GetKeepLargestComponent();
+  options.AllowPoorMaps = filter->GetAllowPoorMaps();
+  options.FlowIterations = filter->GetMaximumNumberOfIterations();
+  options.FlowTolerance = filter->GetConvergenceTolerance();
+  options.CenterBetweenSteps = filter->GetCenterBetweenSteps();
+  options.CenteringDegree = filter->GetCenteringDegree();
+  options.Resolution = filter->GetResolution();
+  options.SmoothingTime = filter->GetSmoothingTime();
+  options.TransformMode = filter->GetTransformMode();
+  options.NumberOfCandidates = filter->GetNumberOfCandidates();
+  options.Refine = filter->GetRefine();
+  options.BasisSize = filter->GetBasisSize();
+  options.GeometricPolish = filter->GetGeometricPolish();
+  options.Candidate = filter->GetCandidate();
+  options.OutputGeometry = filter->GetOutputGeometry();
+  options.NumberOfThreads = filter->GetNumberOfThreads();
+  return options;
 }
 
 // The share of the job's progress before each stage, roughly its share of the time.
@@ -102,15 +127,22 @@ void vtkMobiusRegistration::SetTargetName(const char* name)
 }
 
 //------------------------------------------------------------------------------
-int vtkMobiusRegistration::GetMinimumResolution()
+void vtkMobiusRegistration::SetNumberOfThreads(int threads)
 {
-  return mobius::MinimumResolution;
+  if (this->NumberOfThreads != threads)
+  {
+    this->NumberOfThreads = threads;
+    this->Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
-double vtkMobiusRegistration::GetMinimumConvergenceTolerance()
+std::string vtkMobiusRegistration::CheckParameters(int names)
 {
-  return mobius::MinimumFlowTolerance;
+  const mobius::ParameterNaming naming = names == PYTHON_NAMES ? mobius::ParameterNaming::Python
+    : names == COMMAND_LINE_NAMES ? mobius::ParameterNaming::CommandLine
+                                  : mobius::ParameterNaming::Filter;
+  return mobius::CheckRegistrationParameters(ParametersOf(this), naming);
 }
 
 //------------------------------------------------------------------------------
@@ -132,24 +164,14 @@ int vtkMobiusRegistration::ComputeOutput(
     vtkErrorMacro(<< "Both a Source (port 0) and a Target (port 1) mesh are required.");
     return 0;
   }
-  mobius::RegistrationParameters options;
-  options.FillHoles = this->FillHoles;
-  options.KeepLargestComponent = this->KeepLargestComponent;
-  options.AllowPoorMaps = this->AllowPoorMaps;
-  options.FlowIterations = this->MaximumNumberOfIterations;
-  options.FlowTolerance = this->ConvergenceTolerance;
-  options.CenterBetweenSteps = this->CenterBetweenSteps;
-  options.CenteringDegree = this->CenteringDegree;
-  options.Resolution = this->Resolution;
-  options.SmoothingTime = this->SmoothingTime;
-  options.TransformMode = this->TransformMode;
-  options.NumberOfCandidates = this->NumberOfCandidates;
-  options.Refine = this->Refine;
-  options.BasisSize = this->BasisSize;
-  options.GeometricPolish = this->GeometricPolish;
-  options.Candidate = this->Candidate;
-  options.OutputGeometry = this->OutputGeometry;
-  options.NumberOfThreads = this->NumberOfThreads;
+  const mobius::RegistrationParameters options = ParametersOf(this);
+  const std::string outOfRange =
+    mobius::CheckRegistrationParameters(options, mobius::ParameterNaming::Filter);
+  if (!outOfRange.empty())
+  {
+    vtkErrorMacro(<< outOfRange);
+    return 0;
+  }
 
   // Progress from this thread only: the two conformal maps may run on others, where VTK's
   // observers (ParaView's progress bar) must not be called.

@@ -81,9 +81,9 @@ public:
 
   ///@{
   /** Conformal map: flow steps, convergence tolerance, centering between steps. */
-  vtkSetClampMacro(MaximumNumberOfIterations, int, 1, VTK_INT_MAX);
+  vtkSetMacro(MaximumNumberOfIterations, int);
   vtkGetMacro(MaximumNumberOfIterations, int);
-  vtkSetClampMacro(ConvergenceTolerance, double, 0.0, 1.0);
+  vtkSetMacro(ConvergenceTolerance, double);
   vtkGetMacro(ConvergenceTolerance, double);
   vtkSetMacro(CenterBetweenSteps, bool);
   vtkGetMacro(CenterBetweenSteps, bool);
@@ -92,22 +92,22 @@ public:
 
   ///@{
   /** Centering degree of both maps: 1 the Möbius centering, 2..8 generalized (vtkMobiusCenter). */
-  vtkSetClampMacro(CenteringDegree, int, 1, 8);
+  vtkSetMacro(CenteringDegree, int);
   vtkGetMacro(CenteringDegree, int);
   ///@}
 
   ///@{
   /**
-   * Rotational alignment (vtkSO3Register): grid size (even, >= 4), smoothing time,
+   * Rotational alignment (vtkSO3Register): grid size (even, >= 8), smoothing time,
    * transforms searched (0 rotations, 1 reflections, 2 both), correlation peaks.
    */
   vtkSetMacro(Resolution, int);
   vtkGetMacro(Resolution, int);
-  vtkSetClampMacro(SmoothingTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(SmoothingTime, double);
   vtkGetMacro(SmoothingTime, double);
-  vtkSetClampMacro(TransformMode, int, 0, 2);
+  vtkSetMacro(TransformMode, int);
   vtkGetMacro(TransformMode, int);
-  vtkSetClampMacro(NumberOfCandidates, int, 1, 64);
+  vtkSetMacro(NumberOfCandidates, int);
   vtkGetMacro(NumberOfCandidates, int);
   ///@}
 
@@ -119,29 +119,40 @@ public:
   vtkSetMacro(Refine, bool);
   vtkGetMacro(Refine, bool);
   vtkBooleanMacro(Refine, bool);
-  vtkSetClampMacro(BasisSize, int, 2, 500);
+  vtkSetMacro(BasisSize, int);
   vtkGetMacro(BasisSize, int);
   vtkSetMacro(GeometricPolish, bool);
   vtkGetMacro(GeometricPolish, bool);
   vtkBooleanMacro(GeometricPolish, bool);
-  vtkSetClampMacro(Candidate, int, -1, 63);
+  vtkSetMacro(Candidate, int);
   vtkGetMacro(Candidate, int);
   ///@}
 
   ///@{
   /** Where the output's points are: 0 the target surface, 1 the source surface. */
-  vtkSetClampMacro(OutputGeometry, int, 0, 1);
+  vtkSetMacro(OutputGeometry, int);
   vtkGetMacro(OutputGeometry, int);
   ///@}
 
   ///@{
   /**
-   * The smallest Resolution and ConvergenceTolerance that can register (the stages refuse
-   * less), for interfaces that validate before they run (Python's register()).
+   * The properties' allowed values are checked in one place for every interface
+   * (mobius::CheckRegistrationParameters), not clamped: before it runs, the filter reports
+   * the first property outside them as an error and gives no output. CheckParameters says
+   * it beforehand, in the words of `names`: the properties' own (PROPERTY_NAMES),
+   * mobiusregistration.register()'s keywords (PYTHON_NAMES) or mobius-register's options
+   * (COMMAND_LINE_NAMES); "" when every value is allowed.
    */
-  static int GetMinimumResolution();
-  static double GetMinimumConvergenceTolerance();
-  ///@}
+  enum ParameterNames
+  {
+    PROPERTY_NAMES,
+    PYTHON_NAMES,
+    COMMAND_LINE_NAMES
+  };
+  std::string CheckParameters(int names = PROPERTY_NAMES);
+
+  /** Threads of every threaded stage (see the base class); checked as above, not clamped. */
+  void SetNumberOfThreads(int threads) override;
 
 protected:
   vtkMobiusRegistration();

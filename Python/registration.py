@@ -233,6 +233,23 @@ class Registration:
         return np.einsum("ij,ijk->ik", weights, corners.astype(float))
 
 
+_C_INT = (-2 ** 31, 2 ** 31 - 1)
+
+
+def _require_int(name, value):
+    """An integer option: a Python or NumPy integer that fits a C int (not a bool, not 32.0)."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
+            or not _C_INT[0] <= value <= _C_INT[1]:
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+
+
+def _require_real(name, value):
+    """A real option: a Python or NumPy integer or float (not a bool, not complex)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
+            or (isinstance(value, int) and abs(value) > 2 ** 1000):  # float() would overflow
+        raise ValueError(f"{name} must be a number, got {value!r}")
+
+
 def register(source, target, **options):
     """Registers `source` onto `target` and returns a Registration.
 
@@ -259,34 +276,34 @@ def register(source, target, **options):
     options = dict(DEFAULT_OPTIONS, **options)
     if options["transform"] not in _TRANSFORM_MODES:
         raise ValueError(f"transform must be one of {', '.join(_TRANSFORM_MODES)}, got {options['transform']!r}")
-    resolution = options["resolution"]
-    smallest = vtkMobiusRegistration.GetMinimumResolution()
-    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) \
-            or resolution < smallest or resolution % 2:
-        raise ValueError(f"resolution must be an even integer >= {smallest}, got {options['resolution']!r}")
-    # As mobius-register --tolerance and --smoothing: NaN and infinity pass the filters' clamps.
-    for name, low in (("tolerance", vtkMobiusRegistration.GetMinimumConvergenceTolerance()), ("smoothing", 0.0)):
-        value = options[name]
-        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
-                or not low <= float(value) <= 1:
-            raise ValueError(f"{name} must be a number from {low:g} to 1, got {value!r}")
-    candidates = options["candidates"]
-    if isinstance(candidates, bool) or not isinstance(candidates, (int, np.integer)) or not 1 <= candidates <= 64:
-        raise ValueError(f"candidates must be an integer from 1 to 64, got {candidates!r}")
-    candidate = options["candidate"]
-    if candidate is not None and (isinstance(candidate, bool) or not isinstance(candidate, (int, np.integer))
-                                  or not 0 <= candidate < int(options["candidates"])):
-        raise ValueError(f"candidate must be None or an integer from 0 to candidates - 1 "
-                         f"({int(options['candidates']) - 1}), got {candidate!r}")
-    threads = options["threads"]
-    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 0 <= threads <= 1024:
-        raise ValueError(f"threads must be an integer from 0 to 1024, got {threads!r}")
-    # As mobius-register --basis-size (the filters would clamp it silently).
-    basis_size = options["basis_size"]
-    if isinstance(basis_size, bool) or not isinstance(basis_size, (int, np.integer)) or not 2 <= basis_size <= 500:
-        raise ValueError(f"basis_size must be an integer from 2 to 500, got {basis_size!r}")
+    # Python's part of the checks: the types. Which values are allowed is checked below by
+    # the filter, in the same place as for mobius-register and the VTK filters.
+    for name in ("resolution", "candidates", "threads", "basis_size", "iterations"):
+        _require_int(name, options[name])
+    if options["candidate"] is not None:
+        _require_int("candidate", options["candidate"])
+    for name in ("tolerance", "smoothing"):
+        _require_real(name, options[name])
 
     errors = _Errors()
+    registration = errors.watch(vtkMobiusRegistration())
+    registration.SetMaximumNumberOfIterations(int(options["iterations"]))
+    registration.SetConvergenceTolerance(float(options["tolerance"]))
+    registration.SetFillHoles(bool(options["fill_holes"]))
+    registration.SetKeepLargestComponent(bool(options["keep_largest_component"]))
+    registration.SetAllowPoorMaps(bool(options["allow_poor_maps"]))
+    registration.SetResolution(int(options["resolution"]))
+    registration.SetSmoothingTime(float(options["smoothing"]))
+    registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
+    registration.SetNumberOfCandidates(int(options["candidates"]))
+    registration.SetRefine(bool(options["refine"]))
+    registration.SetBasisSize(int(options["basis_size"]))
+    registration.SetGeometricPolish(bool(options["polish"]))
+    registration.SetCandidate(-1 if options["candidate"] is None else int(options["candidate"]))
+    registration.SetNumberOfThreads(int(options["threads"]))
+    out_of_range = registration.CheckParameters(vtkMobiusRegistration.PYTHON_NAMES)
+    if out_of_range:
+        raise ValueError(out_of_range)
     source_mesh, source_name = _as_polydata(source, "source", errors)
     target_mesh, target_name = _as_polydata(target, "target", errors)
     # The filters give an empty output for an empty input (VTK's convention), not an error.
@@ -294,25 +311,10 @@ def register(source, target, **options):
         if mesh.GetNumberOfPoints() == 0:
             raise RegistrationError(f"{name}: the mesh has no points")
 
-    registration = errors.watch(vtkMobiusRegistration())
     registration.SetSourceData(source_mesh)
     registration.SetTargetData(target_mesh)
     registration.SetSourceName(source_name)
     registration.SetTargetName(target_name)
-    registration.SetMaximumNumberOfIterations(int(options["iterations"]))
-    registration.SetConvergenceTolerance(float(options["tolerance"]))
-    registration.SetFillHoles(bool(options["fill_holes"]))
-    registration.SetKeepLargestComponent(bool(options["keep_largest_component"]))
-    registration.SetAllowPoorMaps(bool(options["allow_poor_maps"]))
-    registration.SetResolution(resolution)
-    registration.SetSmoothingTime(float(options["smoothing"]))
-    registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
-    registration.SetNumberOfCandidates(int(options["candidates"]))
-    registration.SetRefine(bool(options["refine"]))
-    registration.SetBasisSize(int(basis_size))
-    registration.SetGeometricPolish(bool(options["polish"]))
-    registration.SetCandidate(-1 if candidate is None else int(candidate))
-    registration.SetNumberOfThreads(int(threads))
     registration.Update()
     errors.warn()
     if errors.messages:

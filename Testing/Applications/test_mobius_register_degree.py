@@ -78,8 +78,12 @@ if None in results and 2 in results:
     default_rows = open(os.path.join(work, "degree-default.csv")).read()
     check(default_rows != open(os.path.join(work, "degree-2.csv")).read(), "--degree 2 changed the map")
 
-for value in ("0", "9", "2.5", "nan", "two", "-1"):
-    expect_failure([hand, copy, "-o", "bad", "--degree", value], ["--degree", "1", "8"], ["bad"],
+# Out of range: the range in the message; not an integer: the word it was given.
+for value in ("0", "9", "-1"):
+    expect_failure([hand, copy, "-o", "bad", "--degree", value], ["--degree", "1 to 8", value], ["bad"],
+                   code_expected=2, timeout=60)
+for value in ("2.5", "nan", "two"):
+    expect_failure([hand, copy, "-o", "bad", "--degree", value], ["--degree", "integer", f"'{value}'"], ["bad"],
                    code_expected=2, timeout=60)
 expect_failure([hand, copy, "-o", "bad", "--degree"], ["--degree"], ["bad"], code_expected=2, timeout=60)
 expect_failure(["--symmetry", hand, "-o", "bad", "--degree", "2"], ["--degree", "--symmetry"], ["bad"],

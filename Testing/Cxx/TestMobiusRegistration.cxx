@@ -205,5 +205,21 @@ int TestMobiusRegistration(int, char*[])
     MOBIUS_EXPECT(catcher.Error.find("FillHoles") != std::string::npos);
     MOBIUS_EXPECT(whole->GetOutput()->GetNumberOfPoints() == 0);
   }
+
+  // A property out of range: not clamped, an error naming it, before any stage runs.
+  vtkNew<vtkMobiusRegistration> misset;
+  misset->SetSourceData(cow);
+  misset->SetTargetData(bull);
+  misset->SetNumberOfCandidates(65);
+  {
+    mobius_test::MessageCatcher catcher(misset);
+    mobius_test::MessageCatcher executiveCatcher(misset->GetExecutive());
+    misset->Update();
+    std::cout << "65 candidates: " << catcher.Error << "\n";
+    MOBIUS_EXPECT(misset->GetNumberOfCandidates() == 65);
+    MOBIUS_EXPECT(catcher.Error.find("NumberOfCandidates must be an integer from 1 to 64 (it is 65)") !=
+      std::string::npos);
+    MOBIUS_EXPECT(misset->GetOutput()->GetNumberOfPoints() == 0);
+  }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

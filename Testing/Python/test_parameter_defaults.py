@@ -103,8 +103,44 @@ for option, word in (("--transform", DEFAULT_OPTIONS["transform"]),
     if not re.search(rf"^  {re.escape(option)} .*?\(default {word}\)", help_text, re.M | re.S):
         failures.append(f"--help {option}: default is not {word}")
 
+# 4. One validation: a value out of range is refused by mobius-register, register() and
+# vtkMobiusRegistration in the same words (mobius::CheckRegistrationParameters), each
+# naming the parameter its own way.
+from mobiusregistration import register  # noqa: E402
+refused = 0
+for option, keyword, prop, value in (("--basis-size", "basis_size", "BasisSize", 1),
+                                     ("--candidates", "candidates", "NumberOfCandidates", 65),
+                                     ("--resolution", "resolution", "Resolution", 6),
+                                     ("--threads", "threads", "NumberOfThreads", 1025),
+                                     ("--iterations", "iterations", "MaximumNumberOfIterations", 0),
+                                     ("--tolerance", "tolerance", "ConvergenceTolerance", 0),
+                                     ("--smoothing", "smoothing", "SmoothingTime", 2)):
+    # The meshes need not exist: options are checked first.
+    cli = subprocess.run([os.environ["MOBIUS_REGISTER"], "a.off", "b.off", "-o", "never", option, str(value)],
+                         capture_output=True, text=True)
+    cli_words = re.fullmatch(rf"mobius-register: {re.escape(option)} needs (.+), not {value}\n", cli.stderr)
+    try:
+        register("a.off", "b.off", **{keyword: value})
+        python_words = None
+    except ValueError as error:
+        python_words = re.fullmatch(rf"{keyword} must be (.+), got {value}", str(error))
+    whole = filters.vtkMobiusRegistration()
+    getattr(whole, "Set" + prop)(value)
+    filter_words = re.fullmatch(rf"{prop} must be (.+) \(it is {value}\)", whole.CheckParameters())
+    if cli.returncode != 2 or not cli_words or not python_words or not filter_words:
+        failures.append(f"{option} {value}: {cli.returncode} {cli.stderr!r}, Python {python_words}, "
+                        f"filter {whole.CheckParameters()!r}")
+    elif not cli_words.group(1) == python_words.group(1) == filter_words.group(1):
+        failures.append(f"{option} {value}: the interfaces disagree: {cli_words.group(1)!r}, "
+                        f"{python_words.group(1)!r}, {filter_words.group(1)!r}")
+    else:
+        refused += 1
+    getattr(whole, "Set" + prop)(getattr(filters.vtkMobiusRegistration(), "Get" + prop)())
+    if whole.CheckParameters():
+        failures.append(f"{prop}: its default refused: {whole.CheckParameters()!r}")
+
 print(f"{checked} XML defaults, {len(python_expected) + 2} Python options, "
-      f"{len(cli_expected) + 3} command-line options compared")
+      f"{len(cli_expected) + 3} command-line options compared; {refused} values refused alike")
 for failure in failures:
     print("FAIL:", failure)
 sys.exit(1 if failures else 0)

@@ -157,10 +157,13 @@ for bad in (1, 501, 2.5, True):
     else:
         raise AssertionError(f"basis_size={bad!r} accepted")
 # What mobius-register refuses, register() refuses (it accepted these and returned wrong maps
-# or never ended): a coarse grid, an unreachable tolerance, NaN and infinite times, no candidates.
+# or never ended): a coarse grid, an unreachable tolerance, NaN and infinite times, no candidates;
+# and what the filter clamped silently (65 candidates, -1 threads).
 for name, bad in (("resolution", 6), ("resolution", 32.0), ("tolerance", 0), ("tolerance", -1), ("tolerance", 5),
                   ("smoothing", float("inf")), ("smoothing", 1e308), ("smoothing", float("nan")),
-                  ("candidates", 0), ("candidates", -5)):
+                  ("candidates", 0), ("candidates", -5), ("candidates", 65), ("candidate", 4),
+                  ("threads", -1), ("threads", 1025), ("iterations", 0), ("basis_size", 10 ** 20),
+                  ("tolerance", 1j), ("smoothing", 10 ** 400)):
     try:
         register(hand, hand, **{name: bad})
     except ValueError as error:

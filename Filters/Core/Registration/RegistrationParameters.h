@@ -26,11 +26,25 @@ struct IntegerRange
   bool Contains(long long value) const { return value >= Minimum && value <= Maximum; }
 };
 
-/// The interfaces refuse (command line, Python) or clamp (VTK setters) values outside these.
+/// Allowed values of a real parameter, both ends included (NaN is in none).
+struct NumberRange
+{
+  double Minimum;
+  double Maximum;
+  bool Contains(double value) const { return value >= Minimum && value <= Maximum; }
+};
+
+/// The allowed values, checked for every interface by CheckRegistrationParameters
+/// (ParameterRules.h); the stage filters' setters clamp to them.
 inline constexpr IntegerRange CenteringDegreeRange{ 1, 8 };
 inline constexpr IntegerRange BasisSizeRange{ 2, 500 };
-inline constexpr IntegerRange CandidateRange{ -1, 63 }; ///< -1: the refinement chooses
+/// Correlation peaks refined: each costs a refinement, and 64 is far beyond a useful count.
+inline constexpr IntegerRange CandidateCountRange{ 1, 64 };
+inline constexpr IntegerRange CandidateRange{ -1, CandidateCountRange.Maximum - 1 }; ///< -1: the refinement chooses
 inline constexpr IntegerRange ThreadCountRange{ 0, 1024 };
+/// An infinite or huge smoothing time wipes out the signals (exp(-l(l+1) t) leaves nothing
+/// of degree 1 and up well before t = 1).
+inline constexpr NumberRange SmoothingTimeRange{ 0.0, 1.0 };
 /// The scale-factor grid of the registration is even and at least this; its upper end is
 /// the machine's memory. Measured on CGAL's cow, hand, bull, man, camel and bear, each
 /// registered with a rotated copy of itself: a grid of 4 (bandwidth 2) maps all six wrongly
@@ -42,6 +56,8 @@ inline constexpr int ReliableResolution = 32;
 /// precision that change levels off near 1e-9 (CGAL meshes, measured), so a smaller tolerance
 /// is never reached and the flow would run every one of its iterations.
 inline constexpr double MinimumFlowTolerance = 1e-8;
+/// A relative change above 1 is no tolerance.
+inline constexpr NumberRange FlowToleranceRange{ MinimumFlowTolerance, 1.0 };
 
 struct RegistrationParameters
 {
