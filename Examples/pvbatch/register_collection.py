@@ -82,12 +82,8 @@ def fail(message):
 
 if args.mode == "template" and not args.template:
     fail("--mode template needs --template MESH")
-if not 0 <= args.threads <= 1024:
-    fail("--threads must be from 0 to 1024")
 if args.neighbours < 1:
     fail("--neighbours must be at least 1")
-if args.resolution < 4 or args.resolution % 2:
-    fail("--resolution must be even and at least 4")
 for path in args.meshes + ([args.template] if args.template else []):
     if not os.path.isfile(path):
         fail(f"{path}: no such file")
@@ -117,12 +113,20 @@ def share_of_cores():
     return max(1, len(cores) // sharing)
 
 
-threads = args.threads if args.threads > 0 else share_of_cores()
-threads_per_rank = comm.allgather(threads) if comm else [threads]
-
 from mobiusregistration import (  # noqa: E402
     vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkLaplaceBeltramiBasis, vtkMobiusCenter,
-    vtkSO3Register, vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
+    vtkMobiusRegistration, vtkSO3Register, vtkSphericalConformalMap, vtkSphericalScaleGrid,
+    vtkSurfaceMeshReader)
+
+# --resolution and --threads: the rules mobius-register checks, in its words.
+rules = vtkMobiusRegistration()
+rules.SetResolution(args.resolution)
+rules.SetNumberOfThreads(args.threads)
+if rules.CheckParameters(vtkMobiusRegistration.COMMAND_LINE_NAMES):
+    fail(rules.CheckParameters(vtkMobiusRegistration.COMMAND_LINE_NAMES))
+
+threads = args.threads if args.threads > 0 else share_of_cores()
+threads_per_rank = comm.allgather(threads) if comm else [threads]
 from vtkmodules.util import numpy_support  # noqa: E402
 from vtkmodules.vtkCommonCore import (  # noqa: E402
     vtkCommand, vtkDoubleArray, vtkLookupTable, vtkStringArray, vtkUnsignedCharArray)

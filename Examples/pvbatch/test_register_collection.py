@@ -148,5 +148,10 @@ if ("hand", "hand-turned") in names:
     check(float(names[("hand", "hand-turned")]["distance"]) < 0.05, "a turned copy is at distance ~0")
 check(len(pairs) <= 5, "nearest mode registers at most one pair per shape")
 
+# Options out of range: mobius-register's rules and words (status 2, nothing computed).
+done = run(1, os.path.join(scratch, "refused"), "--resolution", "6")
+check(done.returncode == 2 and "--resolution needs an even integer, at least 8, not 6" in done.stderr,
+      f"--resolution 6 refused as mobius-register refuses it: {done.returncode} {done.stderr!r}")
+
 print("PASSED" if not failures else f"{len(failures)} checks failed")
 sys.exit(1 if failures else 0)
