@@ -249,8 +249,8 @@ const std::vector<Option>& Options()
         "The demo writes mobius-demo/demo.{vtp,csv,png} by default.",
         &CommandLine::Output),
       FileName({ "--png" }, "--png FILE",
-        "picture: source colored by position, and the source mesh\n"
-        "placed on the target by the map (needs X; use xvfb-run)",
+        "picture: source colored by position, and the target with\n"
+        "the colors the map carries over (needs X; use xvfb-run)",
         &CommandLine::Picture),
       Heading("\nSymmetry (paper Section 7.3):"),
       { { "--symmetry" }, "--symmetry MESH",

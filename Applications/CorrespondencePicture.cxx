@@ -2,8 +2,10 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellLocator.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkGenericCell.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -125,8 +127,43 @@ vtkSmartPointer<vtkPolyData> OnSurface(vtkPolyData* map)
 }
 }
 
-bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence,
-  std::string& png, std::string& error, int width, int height)
+void PullBackColors(vtkPolyData* placed, vtkPolyData* target)
+{
+  vtkDataArray* sourceColors = placed->GetPointData()->GetArray("PositionColor");
+  vtkNew<vtkCellLocator> locator;
+  locator->SetDataSet(placed);
+  locator->BuildLocator();
+  vtkNew<vtkFloatArray> colors;
+  colors->SetName("PositionColor");
+  colors->SetNumberOfComponents(3);
+  colors->SetNumberOfTuples(target->GetNumberOfPoints());
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType i = 0; i < target->GetNumberOfPoints(); ++i)
+  {
+    double point[3], closest[3], parametric[3], weights[3] = { 0, 0, 0 }, distance2 = 0;
+    target->GetPoint(i, point);
+    vtkIdType cellId = -1;
+    int subId = 0;
+    locator->FindClosestPoint(point, closest, cell, cellId, subId, distance2);
+    double color[3] = { 0, 0, 0 };
+    if (cellId >= 0 && cell->GetNumberOfPoints() == 3)
+    {
+      cell->EvaluatePosition(closest, nullptr, subId, parametric, distance2, weights);
+      for (int corner = 0; corner < 3; ++corner)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          color[k] += weights[corner] * sourceColors->GetComponent(cell->GetPointId(corner), k);
+        }
+      }
+    }
+    colors->SetTuple(i, color);
+  }
+  target->GetPointData()->AddArray(colors);
+}
+
+bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* targetMap,
+  vtkPolyData* correspondence, std::string& png, std::string& error, int width, int height)
 {
   // Debian's VTK renders through GLX only, and aborts the process without an X server.
   const char* display = std::getenv("DISPLAY");
@@ -139,8 +176,7 @@ bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* corres
   source->ShallowCopy(alignedSource);
   AddPositionColors(source);
 
-  // The source mesh placed where the map sends each vertex, with the source's colors: a
-  // good map shows the target's shape with the colors laid out as on the source.
+  // The source mesh placed where the map sends each vertex, with the source's colors.
   vtkDataArray* mapped = correspondence->GetPointData()->GetArray("MappedPoints");
   if (!mapped || mapped->GetNumberOfTuples() != source->GetNumberOfPoints())
   {
@@ -153,13 +189,22 @@ bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* corres
   placedPoints->SetData(mapped);
   placed->SetPoints(placedPoints);
   placed->GetPointData()->AddArray(source->GetPointData()->GetArray("PositionColor"));
+  // The target's own mesh, with the colors pulled back from the placed source: where the
+  // map is many-to-one the placed source folds over itself, the target's mesh does not.
+  if (!targetMap || !targetMap->GetPointData()->GetArray("SurfacePoints"))
+  {
+    error = "the target's map has no SurfacePoints";
+    return false;
+  }
+  auto target = OnSurface(targetMap);
+  PullBackColors(placed, target);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetSize(width, height);
   window->SetMultiSamples(0);
   AddSurface(OnSurface(source), window, 0.0, 0.5);
-  AddSurface(placed, window, 0.5, 1.0);
+  AddSurface(target, window, 0.5, 1.0);
   window->Render();
   vtkNew<vtkWindowToImageFilter> capture;
   capture->SetInput(window);

@@ -176,15 +176,15 @@ bool OutputFiles::WriteCsv(vtkPolyData* correspondence, std::string& error)
   return true;
 }
 
-bool OutputFiles::WritePicture(
-  vtkPolyData* alignedSource, vtkPolyData* correspondence, std::string& error)
+bool OutputFiles::WritePicture(vtkPolyData* alignedSource, vtkPolyData* targetMap,
+  vtkPolyData* correspondence, std::string& error)
 {
   if (this->PicturePath.empty())
   {
     return true;
   }
   std::string png;
-  if (!RenderCorrespondencePicture(alignedSource, correspondence, png, error))
+  if (!RenderCorrespondencePicture(alignedSource, targetMap, correspondence, png, error))
   {
     error = this->PicturePath + ": " + error;
     return false;

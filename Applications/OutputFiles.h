@@ -32,7 +32,8 @@ public:
   /// TargetInputPointIds); -1 is a vertex --fill-holes created.
   bool WriteCsv(vtkPolyData* correspondence, std::string& error);
   /// The picture, rendered in memory by RenderCorrespondencePicture.
-  bool WritePicture(vtkPolyData* alignedSource, vtkPolyData* correspondence, std::string& error);
+  bool WritePicture(vtkPolyData* alignedSource, vtkPolyData* targetMap,
+    vtkPolyData* correspondence, std::string& error);
 
   /// Moves the finished files into place, all of them or none.
   bool Commit(std::string& error);

@@ -386,7 +386,7 @@ int Run(int argc, char* argv[])
   // a complete file is then taken back too (Testing/Applications/test_output_faults.py).
   if (!outputs.WriteCsv(result.Correspondence, error) ||
     !outputs.WriteMesh(result.Correspondence, error) ||
-    !outputs.WritePicture(result.Aligned, result.Correspondence, error) || !outputs.Commit(error))
+    !outputs.WritePicture(result.Aligned, result.TargetCentered, result.Correspondence, error) || !outputs.Commit(error))
   {
     return Fail(error);
   }
