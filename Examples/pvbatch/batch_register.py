@@ -5,11 +5,11 @@ Usage:
         --plugin BUILD/lib/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so \
         --template TEMPLATE_MESH --output DIR MESH [MESH ...]
 
-Each rank takes every size-th mesh, maps it to the sphere, centers it, registers it to the
-template's centered map, refines the correspondence (Refine Correspondence; --no-refine keeps
-the paper's Möbius-only map) and writes DIR/<mesh>-to-template.vtp (the mesh placed on the
-template surface, with TargetCellId, TargetBarycentric, MappedPoints and the template's
-point arrays). Rank 0 gathers one summary line per mesh into DIR/summary.csv; a mesh that
+Each rank takes every size-th mesh and registers it to the template with Mobius Registration
+(vtkMobiusRegistration: the whole job, as mobius-register runs it; --no-refine keeps the
+paper's Möbius-only map) and writes DIR/<mesh>-to-template.vtp (the mesh placed on the
+template surface, with TargetCellId, TargetBarycentric, MappedPoints, the template's point
+arrays and every stage's field data). Rank 0 gathers one summary line per mesh into DIR/summary.csv; a mesh that
 cannot be mapped gets its error message there and does not stop the others. Each rank runs
 the threaded filters with its share of the cores (--threads, default: max(1, cores / K), cores
 the CPUs of its affinity mask, K the ranks of the node sharing them).
@@ -35,8 +35,6 @@ parser.add_argument("--threads", type=int, default=0, metavar="N",
                     help="threads per rank, 0 to 1024 (default 0: this rank's share of the cores)")
 parser.add_argument("meshes", nargs="+")
 args = parser.parse_args()
-if not 0 <= args.threads <= 1024:
-    parser.error("--threads must be from 0 to 1024")
 
 # The filters' Python package sits beside the plugin: from <libdir>/paraview-5.11/plugins/
 # MobiusRegistration/ up to the folder holding python3/dist-packages (lib/, also when the
@@ -48,15 +46,36 @@ for _ in range(5):
     if os.path.isdir(os.path.join(candidate, "mobiusregistration")):
         sys.path.insert(0, candidate)
         break
-from mobiusregistration import (  # noqa: E402
-    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkMobiusCenter, vtkSO3Register, vtkSphericalConformalMap,
-    vtkSurfaceMeshReader)
+from mobiusregistration import vtkMobiusRegistration, vtkSurfaceMeshReader  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
 
 comm = MPI.COMM_WORLD
 rank, size = comm.Get_rank(), comm.Get_size()
+
+
+def registration_for(source_path, watch=lambda algorithm: algorithm):
+    """The whole job for one mesh onto the template, with this script's options; `watch`
+    is given the readers and the filter (to collect their errors)."""
+    registration = watch(vtkMobiusRegistration())
+    for port, path in ((0, source_path), (1, args.template)):
+        reader = watch(vtkSurfaceMeshReader())
+        reader.SetFileName(path)
+        registration.SetInputConnection(port, reader.GetOutputPort())
+    registration.SetSourceName(source_path)
+    registration.SetTargetName(args.template)
+    registration.SetResolution(args.resolution)
+    registration.SetRefine(not args.no_refine)
+    registration.SetNumberOfThreads(args.threads)
+    return registration
+
+
+# The options, checked before any work by the rules mobius-register follows, in its words.
+problem = registration_for(args.template).CheckParameters(vtkMobiusRegistration.COMMAND_LINE_NAMES)
+if problem:
+    if rank == 0:
+        print(f"batch_register: {problem}", file=sys.stderr)
+    sys.exit(2)
 
 
 def share_of_cores():
@@ -90,65 +109,30 @@ class Errors:
     _record.CallDataType = "string0"
 
 
-def centered_map(path, errors):
-    reader = errors.watch(vtkSurfaceMeshReader())
-    reader.SetFileName(path)
-    conformal = errors.watch(vtkSphericalConformalMap())
-    conformal.SetInputConnection(reader.GetOutputPort())
-    center = errors.watch(vtkMobiusCenter())
-    center.SetInputConnection(conformal.GetOutputPort())
-    center.Update()
-    result = vtkPolyData()
-    if conformal.GetOutput().GetNumberOfPoints() > 0:
-        # A degenerate map (flips left, squashed triangles, no convergence) would give a
-        # meaningless correspondence: count it as a failure, with the filter's reason.
-        field = conformal.GetOutput().GetFieldData()
-        if field.GetArray("DegenerateMap") and field.GetArray("DegenerateMap").GetValue(0) == 1:
-            reason = field.GetAbstractArray("DegenerateMapReason")
-            errors.messages.append("degenerate conformal map: " + (reason.GetValue(0) if reason else "?"))
-            return result
-    result.DeepCopy(center.GetOutput())
-    return result
-
-
 os.makedirs(args.output, exist_ok=True)
-template_errors = Errors()
-template = centered_map(args.template, template_errors)
-if template.GetNumberOfPoints() == 0:
-    if rank == 0:
-        print(f"{args.template}: {'; '.join(template_errors.messages)}", file=sys.stderr)
-    sys.exit(1)
-
 rows = []
 for path in args.meshes[rank::size]:
     name = os.path.splitext(os.path.basename(path))[0]
     errors = Errors()
-    source = centered_map(path, errors)
-    if source.GetNumberOfPoints() == 0:
-        rows.append([path, "failed", "", "", "; ".join(errors.messages)])
-        continue
-    registration = errors.watch(vtkSO3Register())
-    registration.SetSourceData(source)
-    registration.SetTargetData(template)
-    registration.SetResolution(args.resolution)
+    registration = registration_for(path, errors.watch)
     registration.SetNumberOfThreads(threads)
-    # The refinement needs at least twice its basis size (80) of vertices on each surface.
-    correspondence = errors.watch(vtkDenseCorrespondence() if args.no_refine else vtkCorrespondenceRefinement())
-    correspondence.SetNumberOfThreads(threads)
-    correspondence.SetSourceConnection(registration.GetOutputPort())
-    correspondence.SetTargetData(template)
     writer = vtkXMLPolyDataWriter()
-    writer.SetInputConnection(correspondence.GetOutputPort())
+    writer.SetInputConnection(registration.GetOutputPort())
     writer.SetDataModeToBinary()  # bookworm's expat cannot read VTK 9.2's appended data back
     output = os.path.join(args.output, f"{name}-to-template.vtp")
     writer.SetFileName(output)
+    # A mesh that cannot be mapped (a degenerate conformal map included) is the filter's
+    # error, naming the mesh; the writer then has nothing to write.
     if writer.Write() != 1 or errors.messages:
+        if os.path.exists(output):
+            os.remove(output)
         rows.append([path, "failed", "", "", "; ".join(errors.messages) or "cannot write " + output])
         continue
     field = registration.GetOutput().GetFieldData()
-    trace = sum(field.GetArray("Rotation").GetComponent(0, k) for k in (0, 4, 8))
+    trace = sum(field.GetArray("Registration.Rotation").GetComponent(0, k) for k in (0, 4, 8))
     angle = math.degrees(math.acos(max(-1.0, min(1.0, (trace - 1) / 2))))
-    rows.append([path, "ok", f"{field.GetArray('RegistrationError').GetValue(0):.6g}", f"{angle:.4f}", output])
+    error = field.GetArray("Registration.RegistrationError").GetValue(0)
+    rows.append([path, "ok", f"{error:.6g}", f"{angle:.4f}", output])
 
 all_rows = comm.gather(rows, root=0)
 if rank == 0:
