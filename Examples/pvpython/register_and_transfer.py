@@ -8,7 +8,7 @@ Without --target, the target is a bent, rotated copy of the source made here, an
 script also reports how far each source vertex lands from its true counterpart (and, with
 --max-error, exits with status 1 when the mean is above that many percent).
 The target gets a point array "Height" (its vertical coordinate before the rotation, or
-its z coordinate for a given target); the Dense Correspondence filter brings it to the
+its z coordinate for a given target); the Mobius Registration filter brings it to the
 source's vertices. Writes DIR/correspondence.vtp and DIR/correspondence.png.
 """
 import argparse
@@ -61,18 +61,18 @@ out.GetPoints().SetData(dsa.numpyTovtkDataArray(bent @ R.T))
 dsa.WrapDataObject(out).PointData.append(p[:, 1].copy(), "Height")
 """
 
-maps = [MobiusCenter(Input=SphericalConformalMap(Input=mesh)) for mesh in (source, target)]  # noqa: F821
-aligned = SO3Register(Source=maps[0], Target=maps[1], Resolution=args.resolution)  # noqa: F821
-# The Möbius map refined spectrally (RefineCorrespondence; DenseCorrespondence gives the
-# paper's map alone). OutputGeometry "Source": the source surface, carrying the arrays brought
-# over from the target.
-correspondence = RefineCorrespondence(Source=aligned, Target=maps[1], OutputGeometry="Source")  # noqa: F821
+# The whole job in one filter: conformal maps, centering, rotational alignment, the Möbius map
+# refined spectrally (Refine=0 keeps the paper's map alone). OutputGeometry "Source": the
+# source surface, carrying the arrays brought over from the target.
+correspondence = MobiusRegistration(Source=source, Target=target, Resolution=args.resolution,  # noqa: F821
+                                    OutputGeometry="Source")
 correspondence.UpdatePipeline()
 
 result = servermanager.Fetch(correspondence)
-field = servermanager.Fetch(aligned).GetFieldData()
+field = result.GetFieldData()  # each stage's figures under its name, e.g. "Registration."
 print("registration error %.4f, %d candidates; %d source vertices carry the target's Height" % (
-    field.GetArray("RegistrationError").GetValue(0), field.GetArray("CandidateScores").GetNumberOfTuples(),
+    field.GetArray("Registration.RegistrationError").GetValue(0),
+    field.GetArray("Registration.CandidateScores").GetNumberOfTuples(),
     result.GetPointData().GetArray("Height").GetNumberOfTuples()))
 if not args.target:
     # Vertex i of the deformed copy is the counterpart of vertex i of the source. The map's
