@@ -27,14 +27,19 @@
 
 namespace
 {
-// Forwards a filter's progress as `stage`'s while it lives.
+using AbortCheck = std::function<bool()>;
+
+// Forwards a filter's progress as `stage`'s while it lives, and stops the filter when
+// `abort` says so.
 class ProgressForwarder
 {
 public:
-  ProgressForwarder(vtkAlgorithm* filter, std::string stage, const StageProgress& progress)
+  ProgressForwarder(vtkAlgorithm* filter, std::string stage, const StageProgress& progress,
+    const AbortCheck& abort)
     : Filter(filter)
     , Stage(std::move(stage))
     , Progress(progress)
+    , Abort(abort)
   {
     this->OnProgress->SetClientData(this);
     this->OnProgress->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
@@ -42,6 +47,10 @@ public:
       if (forwarder->Progress && data)
       {
         forwarder->Progress(forwarder->Stage, *static_cast<double*>(data));
+      }
+      if (forwarder->Abort && forwarder->Abort())
+      {
+        forwarder->Filter->SetAbortExecute(1);
       }
     });
     this->Tag = filter->AddObserver(vtkCommand::ProgressEvent, this->OnProgress);
@@ -54,17 +63,20 @@ private:
   vtkAlgorithm* Filter;
   std::string Stage;
   StageProgress Progress;
+  AbortCheck Abort;
   vtkNew<vtkCallbackCommand> OnProgress;
   unsigned long Tag;
 };
 
-// Runs `filter`, timing it as `stage`. False (with `error` set) if it failed.
+// Runs `filter`, timing it as `stage`. False (with `error` set) if it failed. Messages
+// start with `subject`, or with `stage` when `subject` is empty.
 bool RunStage(vtkPolyDataAlgorithm* filter, const std::string& stage, const std::string& subject,
   const StageProgress& progress, PipelineResult& result, vtkSmartPointer<vtkPolyData>& output,
-  std::string& error)
+  std::string& error, const AbortCheck& abort = {})
 {
+  const std::string& prefix = subject.empty() ? stage : subject;
   mobius::vtk::FilterMessages monitor(filter);
-  ProgressForwarder forwarder(filter, stage, progress);
+  ProgressForwarder forwarder(filter, stage, progress, abort);
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
   const double seconds =
@@ -72,13 +84,13 @@ bool RunStage(vtkPolyDataAlgorithm* filter, const std::string& stage, const std:
   result.Stages.push_back({ stage, seconds });
   for (const auto& warning : monitor.Warnings)
   {
-    result.Warnings.push_back(subject + ": " + warning);
+    result.Warnings.push_back(prefix + ": " + warning);
   }
   output = vtkSmartPointer<vtkPolyData>::New();
   output->ShallowCopy(filter->GetOutput());
   if (!monitor.Error.empty() || output->GetNumberOfPoints() == 0)
   {
-    error = subject + ": " + (monitor.Error.empty() ? stage + " produced no output" : monitor.Error);
+    error = prefix + ": " + (monitor.Error.empty() ? stage + " produced no output" : monitor.Error);
     return false;
   }
   return true;
@@ -87,16 +99,18 @@ bool RunStage(vtkPolyDataAlgorithm* filter, const std::string& stage, const std:
 // The conformal map stage of both jobs; a degenerate map is an error unless AllowPoorMaps.
 bool MapToSphere(vtkPolyData* mesh, const std::string& name, const std::string& stage,
   const mobius::RegistrationParameters& options, const StageProgress& progress,
-  PipelineResult& result, vtkSmartPointer<vtkPolyData>& map, std::string& error)
+  PipelineResult& result, vtkSmartPointer<vtkPolyData>& map, std::string& error,
+  bool linearStart = true, const AbortCheck& abort = {})
 {
   vtkNew<vtkSphericalConformalMap> conformal;
+  conformal->SetLinearStart(linearStart);
   conformal->SetInputData(mesh);
   conformal->SetMaximumNumberOfIterations(options.FlowIterations);
   conformal->SetConvergenceTolerance(options.FlowTolerance);
   conformal->SetCenterBetweenSteps(options.CenterBetweenSteps);
   conformal->SetFillHoles(options.FillHoles);
   conformal->SetKeepLargestComponent(options.KeepLargestComponent);
-  if (!RunStage(conformal, stage, name, progress, result, map, error))
+  if (!RunStage(conformal, stage, name, progress, result, map, error, abort))
   {
     return false;
   }
@@ -106,13 +120,40 @@ bool MapToSphere(vtkPolyData* mesh, const std::string& name, const std::string& 
   {
     auto reason =
       vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
-    error = name + ": the conformal map is degenerate: " +
+    error = (name.empty() ? stage : name) + ": the conformal map is degenerate: " +
       (reason && reason->GetNumberOfValues() > 0 ? reason->GetValue(0) : std::string("see its field data")) +
       "; set AllowPoorMaps to write the result anyway";
     return false;
   }
   return true;
 }
+}
+
+bool MapAndCenter(vtkPolyData* mesh, const std::string& name,
+  const mobius::RegistrationParameters& options, const OneMeshStages& stages,
+  const StageProgress& progress, PipelineResult& result, vtkSmartPointer<vtkPolyData>& map,
+  vtkSmartPointer<vtkPolyData>& centered, std::string& error)
+{
+  if (!stages.Map)
+  {
+    map = mesh;
+  }
+  else if (!MapToSphere(mesh, name, "conformal map" + stages.Which, options, progress, result, map,
+             error, stages.LinearStart, stages.Abort))
+  {
+    return false;
+  }
+  if (!stages.Center)
+  {
+    centered = map;
+    return true;
+  }
+  vtkNew<vtkMobiusCenter> center;
+  center->SetInputData(map);
+  center->SetTolerance(options.CenteringTolerance);
+  center->SetDegree(options.CenteringDegree);
+  return RunStage(
+    center, "centering" + stages.Which, name, progress, result, centered, error, stages.Abort);
 }
 
 double FieldValue(vtkPolyData* data, const char* name, int component)
@@ -155,17 +196,10 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   PipelineResult parts[2];
   std::string errors[2];
   auto mapAndCenter = [&](int k) {
-    if (!MapToSphere(inputs[k], names[k], std::string("conformal map (") + which[k] + ")",
-          options, sharedProgress, parts[k], *maps[k], errors[k]))
-    {
-      return false;
-    }
-    vtkNew<vtkMobiusCenter> center;
-    center->SetInputData(*maps[k]);
-    center->SetTolerance(options.CenteringTolerance);
-    center->SetDegree(options.CenteringDegree);
-    return RunStage(center, std::string("centering (") + which[k] + ")", names[k],
-      sharedProgress, parts[k], *centered[k], errors[k]);
+    OneMeshStages stages;
+    stages.Which = std::string(" (") + which[k] + ")";
+    return MapAndCenter(inputs[k], names[k], options, stages, sharedProgress, parts[k], *maps[k],
+      *centered[k], errors[k]);
   };
   bool ok[2] = { false, false };
   // In turn (one thread) the target is not mapped after the source failed. ParallelFor

@@ -46,6 +46,26 @@ struct PipelineResult
 /// two meshes are mapped side by side; calls do not overlap).
 using StageProgress = std::function<void(const std::string& stage, double fraction)>;
 
+/// What a job leaves out of, or changes in, the first stages of one mesh (MapAndCenter).
+struct OneMeshStages
+{
+  bool Map = true;         ///< false: the mesh is already its spherical map
+  bool Center = true;      ///< false: the map stays uncentered (`centered` is the map)
+  bool LinearStart = true; ///< vtkSphericalConformalMap::LinearStart
+  std::string Which;       ///< appended to the stage names, e.g. " (source)"
+  /// Asked at each progress step; true stops the running stage (a filter's AbortExecute).
+  std::function<bool()> Abort;
+};
+
+/// The first stages of every job, for one mesh: its conformal map (a degenerate map is an
+/// error unless AllowPoorMaps) and its centering (CenteringTolerance, CenteringDegree).
+/// Messages start with `name`, or with the stage's name when `name` is empty. False (with
+/// `error` set) on failure; `result` gets the stages' timings and warnings.
+VTKMOBIUSREGISTRATIONFILTERS_EXPORT bool MapAndCenter(vtkPolyData* mesh, const std::string& name,
+  const mobius::RegistrationParameters& options, const OneMeshStages& stages,
+  const StageProgress& progress, PipelineResult& result, vtkSmartPointer<vtkPolyData>& map,
+  vtkSmartPointer<vtkPolyData>& centered, std::string& error);
+
 /// Runs the registration job. On failure returns false and sets `error` to one line naming
 /// what failed (with `sourceName` / `targetName` for the stage that concerns one input).
 VTKMOBIUSREGISTRATIONFILTERS_EXPORT bool RunRegistrationPipeline(vtkPolyData* source,

@@ -86,6 +86,7 @@ double StageStart(const std::string& stage, double& length)
 vtkMobiusRegistration::vtkMobiusRegistration()
 {
   this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(3); // the correspondence, the two centered maps aligned
   const mobius::RegistrationParameters defaults;
   this->FillHoles = defaults.FillHoles;
   this->KeepLargestComponent = defaults.KeepLargestComponent;
@@ -212,6 +213,14 @@ int vtkMobiusRegistration::ComputeOutput(
     AddStageFields(fields, "MobiusCorrespondence.", result.MobiusCorrespondence, result.Aligned);
   }
   output->SetFieldData(fields);
+  if (vtkPolyData* aligned = vtkPolyData::GetData(outputVector, 1))
+  {
+    aligned->ShallowCopy(result.Aligned);
+  }
+  if (vtkPolyData* targetSphere = vtkPolyData::GetData(outputVector, 2))
+  {
+    targetSphere->ShallowCopy(result.TargetCentered);
+  }
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -21,6 +21,10 @@
  * `Registration.` (e.g. `Registration.Rotation`) and, when refined,
  * `MobiusCorrespondence.`.
  *
+ * Two more outputs, for a view of the alignment: port 1, the source's centered spherical
+ * map turned by the rotational alignment (vtkSO3Register's output, with the source's point
+ * arrays); port 2, the target's centered spherical map (vtkMobiusCenter's output).
+ *
  * Errors: a mesh that cannot be mapped (the stage's message, naming the Source or the
  * Target), a degenerate conformal map unless AllowPoorMaps. Warnings: the stages'.
  *

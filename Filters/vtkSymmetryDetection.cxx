@@ -1,5 +1,6 @@
 #include "vtkSymmetryDetection.h"
 
+#include "MobiusPipeline.h"
 #include "RegistrationParameters.h"
 #include "ParallelFor.h"
 #include "SymmetryMeasures.h"
@@ -7,9 +8,7 @@
 #include "MobiusCorrespondenceOutput.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
-#include "vtkMobiusCenter.h"
 #include "vtkSO3Register.h"
-#include "vtkSphericalConformalMap.h"
 #include "MobiusSphericalMapData.h"
 
 #include "vtkCellData.h"
@@ -119,35 +118,45 @@ int vtkSymmetryDetection::ComputeOutput(
     return this->GetAbortExecute() ? nullptr : result;
   };
 
-  // The stages run on a copy: the pipeline's input object stays out of the internal pipeline.
-  vtkSmartPointer<vtkPolyData> map = vtkSmartPointer<vtkPolyData>::New();
-  map->ShallowCopy(input);
-  if (!IsSphericalMap(input))
+  // The map and its centering as every job makes them (MobiusPipeline.h), on a copy: the
+  // pipeline's input object stays out of the internal pipeline.
+  vtkSmartPointer<vtkPolyData> copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(input);
+  mobius::RegistrationParameters options; // the stages' defaults
+  options.AllowPoorMaps = true;           // a poor map is reported in its field data
+  // Centering between flow steps is centering too: off for the uncentered comparison.
+  options.CenterBetweenSteps = this->Centering;
+  OneMeshStages stages;
+  stages.Map = !IsSphericalMap(input);
+  stages.Center = this->Centering;
+  // The flow from the surface: each of its steps commutes with a mirror symmetry of the
+  // surface, so an exactly symmetric mesh gets an exactly symmetric map in the surface's
+  // own orientation (TestSymmetryDetection: the mirror to 1e-6, every image on its partner
+  // vertex). The linear start's pole sits in one triangle: its map is symmetric only to
+  // the flow's tolerance.
+  stages.LinearStart = false;
+  stages.Abort = [this] { return this->GetAbortExecute() != 0; };
+  const StageProgress progress = [this](const std::string& stage, double fraction) {
+    // The conformal map takes most of the time before the registration.
+    this->UpdateProgress(stage == "centering" ? 0.3 + 0.05 * fraction : 0.3 * fraction);
+  };
+  PipelineResult stageResult;
+  vtkSmartPointer<vtkPolyData> map, centered;
+  std::string stageError; // names its stage (MapAndCenter without a mesh name)
+  const bool ready =
+    MapAndCenter(copy, "", options, stages, progress, stageResult, map, centered, stageError);
+  for (const auto& warning : stageResult.Warnings)
   {
-    vtkNew<vtkSphericalConformalMap> conformal;
-    conformal->SetInputData(map);
-    // Centering between flow steps is centering too: off for the uncentered comparison.
-    conformal->SetCenterBetweenSteps(this->Centering);
-    // The flow from the surface: each of its steps commutes with a mirror symmetry of the
-    // surface, so an exactly symmetric mesh gets an exactly symmetric map in the surface's
-    // own orientation (TestSymmetryDetection: the mirror to 1e-6, every image on its partner
-    // vertex). The linear start's pole sits in one triangle: its map is symmetric only to
-    // the flow's tolerance.
-    conformal->SetLinearStart(false);
-    if (!(map = run(conformal, "conformal map", 0.0, 0.3)))
-    {
-      return 0;
-    }
+    vtkWarningMacro(<< warning);
   }
-  vtkSmartPointer<vtkPolyData> centered = map;
-  if (this->Centering)
+  if (this->GetAbortExecute())
   {
-    vtkNew<vtkMobiusCenter> center;
-    center->SetInputData(map);
-    if (!(centered = run(center, "centering", 0.3, 0.35)))
-    {
-      return 0;
-    }
+    return 0;
+  }
+  if (!ready)
+  {
+    vtkErrorMacro(<< "Cannot detect symmetry: " << stageError);
+    return 0;
   }
 
   // Resolved once, so that every stage runs with the same count.

@@ -11,9 +11,10 @@
  * dense map of the surface onto itself, refined by vtkCorrespondenceRefinement (default) or
  * read off the sphere by vtkDenseCorrespondence (the paper's map, `Refine` off).
  *
- * Input: a closed genus-0 triangle mesh, mapped to the sphere here with
- * vtkSphericalConformalMap's defaults (centering between flow steps only when `Centering`
- * is on); or a spherical map already made by vtkSphericalConformalMap (points on the unit
+ * Input: a closed genus-0 triangle mesh, mapped to the sphere and centered here by the
+ * pipeline's one-mesh stages (MapAndCenter, MobiusPipeline.h) with their defaults (the flow
+ * from the surface; centering between flow steps only when `Centering` is on); or a
+ * spherical map already made by vtkSphericalConformalMap (points on the unit
  * sphere with `SurfacePoints` and `SurfaceArea`), to choose the flow's settings.
  *
  * Output: the surface (points at `SurfacePoints`, the input's connectivity) with the

@@ -5,17 +5,17 @@ The Debian package installs it in ParaView's Macros menu (a link in /usr/bin/Mac
 ParaView lists macros) with the plugin loaded at start-up. Otherwise add it with Macros ->
 Import new macro... (installed as <prefix>/share/mobius-registration/macros/; the plugin
 must be loaded: Tools -> Manage Plugins, or PV_PLUGIN_PATH). Open two meshes, select the
-one to map from (the source), and click the macro. It builds
-    Spherical Conformal Map -> Mobius Center   (for each mesh)
-    SO3 Register (Source, Target) -> Refine Correspondence (Source, Target)
+one to map from (the source), and click the macro. It adds the plugin's "Mobius
+Registration" filter (Source, Target), which runs the whole pipeline (conformal map and
+centering of each mesh, rotational alignment, refined correspondence) with its defaults,
 and opens a new layout tab "Mobius correspondence N" with linked render views side by side:
   - left, the source, colored by its position (red-green-blue from x-y-z), or by the point
     array it is colored by in the active view when the macro runs;
   - middle, the map's result: every source vertex placed where the map sends it on the
     target surface, keeping its color, so the same colors on both sides mean corresponding
     points;
-  - right (SHOW_SPHERES), the two centered spherical maps side by side, the source's turned
-    by SO3 Register's rotation, in the same colors.
+  - right (SHOW_SPHERES), the two centered spherical maps side by side (the filter's output
+    ports 1 and 2), the source's turned by the rotational alignment, in the same colors.
 The target is the other mesh without an input in the pipeline; if the selected mesh is not
 one of the two, the first loaded mesh is the source. It can be run again (on the same or
 other meshes): each run adds a pipeline and a layout.
@@ -25,7 +25,7 @@ from paraview import servermanager
 from paraview.simple import (
     AddCameraLink, Calculator, ColorBy, CreateLayout, CreateView,
     GetActiveSource, GetActiveView, GetLayouts, GetSources, Hide,
-    Render, SetActiveSource, SetActiveView, Show, Text, Transform)
+    OutputPort, Render, SetActiveSource, SetActiveView, Show, Text, Transform)
 
 
 def plugin_filter(name):
@@ -127,14 +127,10 @@ def build_pipeline():
     colored = source if array else with_position_colors(source)
     array = array or POSITION_COLORS
 
-    centered = []
-    for mesh in (colored, target):
-        conformal = plugin_filter("SphericalConformalMap")(Input=mesh)
-        centered.append(plugin_filter("MobiusCenter")(Input=conformal))
-    aligned = plugin_filter("SO3Register")(Source=centered[0], Target=centered[1])
     # The Möbius map refined spectrally (from every candidate rotation): the accurate map.
-    # Its output is the source's connectivity and point arrays at the mapped points.
-    correspondence = plugin_filter("RefineCorrespondence")(Source=aligned, Target=centered[1])
+    # Its output is the source's connectivity and point arrays at the mapped points; ports
+    # 1 and 2 are the source's centered map turned by the alignment and the target's.
+    correspondence = plugin_filter("MobiusRegistration")(Source=colored, Target=target)
 
     previous = GetActiveView()
     if previous is not None:
@@ -163,8 +159,8 @@ def build_pipeline():
     # The source and the target are seen from the same side.
     AddCameraLink(views[0], views[1], f"Mobius correspondence {number}")
     if SHOW_SPHERES:
-        show_colored(aligned, views[2], array)
-        beside = Transform(Input=centered[1])
+        show_colored(OutputPort(correspondence, 1), views[2], array)
+        beside = Transform(Input=OutputPort(correspondence, 2))
         beside.Transform.Translate = [2.5, 0.0, 0.0]
         sphere = Show(beside, views[2])
         sphere.ColorArrayName = ["POINTS", ""]

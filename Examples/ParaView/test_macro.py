@@ -6,10 +6,14 @@ Run 1: the source is a copy of MESH with a point array `Height`, shown colored b
 active view (the user's pick); the target is MESH. Run 2, with the target selected: the
 mesh without arrays becomes the source and is colored by position. Each run must make its
 own layout with three linked views showing the expected objects and coloring arrays, and
-the second run must not count the first run's filters (or labels) as loaded meshes.
+the second run must not count the first run's filters (or labels) as loaded meshes. Both
+meshes have the same surface and vertex numbering, so the right map sends every vertex
+to (nearly) its own position: the map itself is checked too.
 """
 import os
 import sys
+
+import numpy as np
 
 from paraview import servermanager
 from paraview.simple import (
@@ -40,8 +44,34 @@ SetActiveSource(source)
 def run_macro():
     exec(open(macro).read(), dict(globals()))
     correspondence = GetActiveSource()
-    assert correspondence.GetXMLName() == "RefineCorrespondence", correspondence.GetXMLName()
+    assert correspondence.GetXMLName() == "MobiusRegistration", correspondence.GetXMLName()
     return correspondence
+
+
+def check_map(correspondence):
+    """The two meshes are one surface: every source vertex maps onto its own position."""
+    source = servermanager.Fetch(correspondence.Source)
+    mapped = servermanager.Fetch(correspondence)
+    assert mapped.GetNumberOfPoints() == source.GetNumberOfPoints() > 0
+    points = vtk_to_numpy(source.GetPoints().GetData())
+    errors = np.linalg.norm(vtk_to_numpy(mapped.GetPoints().GetData()) - points, axis=1)
+    diagonal = np.linalg.norm(points.max(axis=0) - points.min(axis=0))
+    median, worst = np.median(errors) / diagonal, np.percentile(errors, 95) / diagonal
+    # A map turned or flipped by a wrong alignment puts most vertices a large part of the
+    # diagonal away.
+    assert median < MEDIAN_ERROR and worst < WORST_ERROR, (median, worst)
+    return median, worst
+
+
+def shown_port(view, proxy, port):
+    """The view's display of output port `port` of `proxy`, if any."""
+    for display in view.Representations:
+        connection = display.SMProxy.GetProperty("Input")
+        if (connection is not None and connection.GetNumberOfProxies() == 1
+                and connection.GetProxy(0) == proxy.SMProxy
+                and connection.GetOutputPortForConnection(0) == port):
+            return display
+    return None
 
 
 def check_layout(number, correspondence, shown_source, array, direct_colors):
@@ -51,9 +81,11 @@ def check_layout(number, correspondence, shown_source, array, direct_colors):
     assert all(v is not None for v in views), views
     views = [servermanager._getPyProxy(v) for v in views]
     # The same coloring array on the source and on the mapped source.
-    for view, proxy in ((views[0], shown_source), (views[1], correspondence), (views[2], correspondence.Source)):
-        display = servermanager.GetRepresentation(proxy, view)
-        assert display is not None and display.Visibility, (number, proxy.GetXMLName())
+    # The spheres' view shows the aligned source sphere, the filter's port 1.
+    for view, proxy, port in ((views[0], shown_source, 0), (views[1], correspondence, 0),
+                              (views[2], correspondence, 1)):
+        display = shown_port(view, proxy, port)
+        assert display is not None and display.Visibility, (number, proxy.GetXMLName(), port)
         assert list(display.ColorArrayName) == ["POINTS", array], (number, list(display.ColorArrayName))
         assert display.MapScalars == (0 if direct_colors else 1)
     # Linked cameras: the two surfaces are seen from the same side.
@@ -65,18 +97,24 @@ def check_layout(number, correspondence, shown_source, array, direct_colors):
     SaveScreenshot(os.path.join(output, f"macro_{number}.png"), layouts[0], ImageResolution=[1200, 400])
 
 
+MEDIAN_ERROR, WORST_ERROR = 0.01, 0.05  # of the bounding box diagonal
+
 first = run_macro()
+assert first.Source is source and first.Target is target
 check_layout(1, first, source, "Height", False)
-print("run 1: source colored by its Height array in three linked views")
+print("run 1: source colored by its Height array in three linked views; "
+      "median and 95th percentile error %.2g %.2g" % check_map(first))
 
 SetActiveSource(target)
 second = run_macro()
 assert second is not first
 # The target was selected: it is the source now, colored by position through a Calculator.
-colored = second.Source.Source.Input.Input  # SO3Register <- MobiusCenter <- conformal map
+colored = second.Source
 assert colored.GetXMLName() == "Calculator" and colored.Input is target
+assert second.Target is source
 check_layout(2, second, colored, "PositionColor", True)
 colors = vtk_to_numpy(servermanager.Fetch(colored).GetPointData().GetArray("PositionColor"))
 assert colors.shape[1] == 3 and colors.min() >= 0 and colors.max() <= 1 + 1e-9
-print("run 2: position colors; error",
-      servermanager.Fetch(second.Source).GetFieldData().GetArray("RegistrationError").GetValue(0))
+print("run 2: position colors; median and 95th percentile error %.2g %.2g" % check_map(second),
+      "; registration error",
+      servermanager.Fetch(second).GetFieldData().GetArray("Registration.RegistrationError").GetValue(0))

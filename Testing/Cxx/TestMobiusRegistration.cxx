@@ -120,6 +120,11 @@ int CompareWithChain(vtkPolyData* source, vtkPolyData* target, bool refine)
     field(sourceMap->GetOutput(), "MeanQuasiConformalDistortion"), "SourceMap distortion");
   failures += ExpectSameArray(field(a, "TargetCentering.CenterOfMassNorm"),
     field(targetCentered->GetOutput(), "CenterOfMassNorm"), "TargetCentering.CenterOfMassNorm");
+  // Ports 1 and 2: the aligned source sphere and the target sphere, the chain's.
+  failures += ExpectSameArray(whole->GetOutput(1)->GetPoints()->GetData(),
+    registration->GetOutput()->GetPoints()->GetData(), "port 1 points");
+  failures += ExpectSameArray(whole->GetOutput(2)->GetPoints()->GetData(),
+    targetCentered->GetOutput()->GetPoints()->GetData(), "port 2 points");
   MOBIUS_EXPECT((field(a, "MobiusCorrespondence.ClampedPoints") != nullptr) == refine);
   MOBIUS_EXPECT((field(a, "RefinementOrthogonalityResidual") != nullptr) == refine);
   std::cout << (refine ? "refined" : "Moebius") << " map: " << a->GetNumberOfPoints()

@@ -30,17 +30,24 @@ def open_two_meshes(folder):
 
 def check_views(screenshot):
     """The macro's layout: three views with the source, the mapped source on the target
-    and the spheres, all shown, the first two colored alike; saves and checks a picture."""
+    and the spheres, all shown, the first two colored alike; the map itself (the target is
+    the source turned and stretched, vertex for vertex); saves and checks a picture."""
     layouts = [layout for (name, _), layout in GetLayouts().items() if name.startswith("Mobius correspondence")]
     assert len(layouts) == 1, f"layouts: {list(GetLayouts())}"
     correspondence = GetActiveSource()
-    assert correspondence.GetXMLName() == "RefineCorrespondence", correspondence.GetXMLName()
+    assert correspondence.GetXMLName() == "MobiusRegistration", correspondence.GetXMLName()
     views = [layouts[0].GetView(cell) for cell in (1, 5, 6)]  # the macro's three cells
     assert all(view is not None for view in views), f"the layout's views: {views}"
     views = [servermanager._getPyProxy(view) for view in views]
-    cow_points = servermanager.Fetch(correspondence.Source.Source.Input.Input).GetNumberOfPoints()
+    cow_points = servermanager.Fetch(correspondence.Source).GetNumberOfPoints()
     mapped = servermanager.Fetch(correspondence)
     assert mapped.GetNumberOfPoints() == cow_points > 0, (mapped.GetNumberOfPoints(), cow_points)
+    # Vertex i of the target is the cow's vertex i turned and stretched: where it should go.
+    truth = vtk_to_numpy(servermanager.Fetch(correspondence.Target).GetPoints().GetData())
+    errors = np.linalg.norm(vtk_to_numpy(mapped.GetPoints().GetData()) - truth, axis=1)
+    median = np.median(errors) / np.linalg.norm(truth.max(axis=0) - truth.min(axis=0))
+    # A map turned or flipped by a wrong alignment is off by a large part of the diagonal.
+    assert median < 0.02, f"median map error {median:.3g} of the target's diagonal"
     display = servermanager.GetRepresentation(correspondence, views[1])
     assert display is not None and display.Visibility, "the mapped source is not shown in the middle view"
     shown = [sum(1 for rep in view.Representations if rep.Visibility) for view in views]
@@ -54,4 +61,4 @@ def check_views(screenshot):
     # Three views of colored surfaces: many colors; an empty or black picture has one or two.
     assert colors > 200, f"{screenshot}: only {colors} colors"
     return (f"layout '{[name for (name, _) in GetLayouts() if name.startswith('Mobius')][0]}': 3 views, "
-            f"{cow_points} source vertices mapped, screenshot {screenshot} with {colors} colors")
+            f"{cow_points} source vertices mapped (median error {median:.2g} of the diagonal), screenshot {screenshot} with {colors} colors")

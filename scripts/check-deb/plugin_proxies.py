@@ -1,7 +1,8 @@
 """The plugin's proxies, looked up in the running ParaView's proxy definitions."""
 from paraview import servermanager
 
-FILTERS = ["SphericalConformalMap", "MobiusCenter", "SphericalScaleGrid", "SO3Register",
+FILTERS = ["MobiusRegistration", "SphericalConformalMap", "MobiusCenter", "SphericalScaleGrid",
+           "SO3Register",
            "DenseCorrespondence", "RefineCorrespondence", "DetectSymmetry", "SphericalOrbifoldMap"]
 
 
