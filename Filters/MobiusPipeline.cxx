@@ -198,6 +198,7 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   auto mapAndCenter = [&](int k) {
     OneMeshStages stages;
     stages.Which = std::string(" (") + which[k] + ")";
+    stages.Map = stages.Center = !options.InputsAreCenteredMaps;
     return MapAndCenter(inputs[k], names[k], options, stages, sharedProgress, parts[k], *maps[k],
       *centered[k], errors[k]);
   };

@@ -44,6 +44,7 @@ void AddStageFields(vtkFieldData* fields, const std::string& prefix, vtkPolyData
 mobius::RegistrationParameters ParametersOf(vtkMobiusRegistration* filter)
 {
   mobius::RegistrationParameters options;
+  options.InputsAreCenteredMaps = filter->GetInputsAreCenteredMaps();
   options.FillHoles = filter->GetFillHoles();
   options.KeepLargestComponent = filter->GetKeepLargestComponent();
   options.AllowPoorMaps = filter->GetAllowPoorMaps();
@@ -88,6 +89,7 @@ vtkMobiusRegistration::vtkMobiusRegistration()
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(3); // the correspondence, the two centered maps aligned
   const mobius::RegistrationParameters defaults;
+  this->InputsAreCenteredMaps = defaults.InputsAreCenteredMaps;
   this->FillHoles = defaults.FillHoles;
   this->KeepLargestComponent = defaults.KeepLargestComponent;
   this->AllowPoorMaps = defaults.AllowPoorMaps;
@@ -203,10 +205,13 @@ int vtkMobiusRegistration::ComputeOutput(
   output->ShallowCopy(result.Correspondence);
   vtkNew<vtkFieldData> fields;
   fields->ShallowCopy(result.Correspondence->GetFieldData());
-  AddStageFields(fields, "SourceMap.", result.SourceMap);
-  AddStageFields(fields, "TargetMap.", result.TargetMap);
-  AddStageFields(fields, "SourceCentering.", result.SourceCentered, result.SourceMap);
-  AddStageFields(fields, "TargetCentering.", result.TargetCentered, result.TargetMap);
+  if (!options.InputsAreCenteredMaps) // else these are the inputs, which the caller has
+  {
+    AddStageFields(fields, "SourceMap.", result.SourceMap);
+    AddStageFields(fields, "TargetMap.", result.TargetMap);
+    AddStageFields(fields, "SourceCentering.", result.SourceCentered, result.SourceMap);
+    AddStageFields(fields, "TargetCentering.", result.TargetCentered, result.TargetMap);
+  }
   AddStageFields(fields, "Registration.", result.Aligned, result.SourceCentered);
   if (result.Correspondence != result.MobiusCorrespondence)
   {
@@ -231,6 +236,7 @@ void vtkMobiusRegistration::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SourceName: " << this->SourceName << "\n";
   os << indent << "TargetName: " << this->TargetName << "\n";
+  os << indent << "InputsAreCenteredMaps: " << this->InputsAreCenteredMaps << "\n";
   os << indent << "FillHoles: " << this->FillHoles << "\n";
   os << indent << "KeepLargestComponent: " << this->KeepLargestComponent << "\n";
   os << indent << "AllowPoorMaps: " << this->AllowPoorMaps << "\n";

@@ -67,6 +67,16 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The inputs are centered spherical maps already (vtkMobiusCenter outputs, as a collection
+   * driver keeps one per shape, with a stored eigenbasis if it likes): the job starts at the
+   * rotational alignment, and the output has no `SourceMap.`, `TargetMap.` or `*Centering.`
+   * field data. Off by default: the inputs are meshes.
+   */
+  vtkSetMacro(InputsAreCenteredMaps, bool);
+  vtkGetMacro(InputsAreCenteredMaps, bool);
+  vtkBooleanMacro(InputsAreCenteredMaps, bool);
+
   /** Repair: close holes, keep the largest component (vtkSphericalConformalMap). */
   vtkSetMacro(FillHoles, bool);
   vtkGetMacro(FillHoles, bool);
@@ -168,6 +178,7 @@ protected:
   // Defaults: mobius::RegistrationParameters (the constructor).
   std::string SourceName = "Source";
   std::string TargetName = "Target";
+  bool InputsAreCenteredMaps;
   bool FillHoles;
   bool KeepLargestComponent;
   bool AllowPoorMaps;

@@ -114,9 +114,8 @@ def share_of_cores():
 
 
 from mobiusregistration import (  # noqa: E402
-    vtkCorrespondenceRefinement, vtkDenseCorrespondence, vtkLaplaceBeltramiBasis, vtkMobiusCenter,
-    vtkMobiusRegistration, vtkSO3Register, vtkSphericalConformalMap, vtkSphericalScaleGrid,
-    vtkSurfaceMeshReader)
+    vtkLaplaceBeltramiBasis, vtkMobiusCenter, vtkMobiusRegistration, vtkSphericalConformalMap,
+    vtkSphericalScaleGrid, vtkSurfaceMeshReader)
 
 # --resolution and --threads: the rules mobius-register checks, in its words.
 rules = vtkMobiusRegistration()
@@ -417,33 +416,34 @@ def register_pair(p):
     if args.refine == "spectral":
         attach_basis(source_map, source)
         attach_basis(target_map, target)
-    registration = errors.watch(vtkSO3Register())
+    # The whole job from the cached centered maps on: rotational alignment, correspondence
+    # and (spectral) its refinement with the stored bases.
+    registration = errors.watch(vtkMobiusRegistration())
+    registration.InputsAreCenteredMapsOn()
     registration.SetSourceData(source_map)
     registration.SetTargetData(target_map)
+    registration.SetSourceName(names[source])
+    registration.SetTargetName(names[target])
     registration.SetResolution(args.resolution)
     registration.SetNumberOfThreads(threads)
-    correspondence = errors.watch(vtkCorrespondenceRefinement() if args.refine == "spectral"
-                                  else vtkDenseCorrespondence())
-    correspondence.SetNumberOfThreads(threads)
-    if args.refine == "spectral":
-        correspondence.SetBasisSize(BASIS_SIZE)  # the stored bases' size: they are used
-    correspondence.SetSourceConnection(registration.GetOutputPort())
-    correspondence.SetTargetData(target_map)
-    correspondence.Update()
-    result = correspondence.GetOutput()
+    registration.SetRefine(args.refine == "spectral")
+    registration.SetBasisSize(BASIS_SIZE)  # the stored bases' size: they are used
+    registration.Update()
+    result = registration.GetOutput()
     record = {"status": "failed", "error": "", "rank": rank}
     if errors.messages or result.GetNumberOfPoints() == 0:
         record["error"] = "; ".join(errors.messages) or "no output"
     else:
-        fields = registration.GetOutput()
-        rho = field_value(fields, "CorrelationCoefficient")
+        def aligned(name, component=0):
+            return field_value(result, "Registration." + name, component)
+        rho = aligned("CorrelationCoefficient")
         record.update(
             status="ok",
-            transform=[field_value(fields, "Rotation", k) for k in range(9)],
-            determinant=field_value(fields, "Determinant"),
-            correlation_score=field_value(fields, "CorrelationScore"),
+            transform=[aligned("Rotation", k) for k in range(9)],
+            determinant=aligned("Determinant"),
+            correlation_score=aligned("CorrelationScore"),
             correlation_coefficient=rho,
-            registration_error=field_value(fields, "RegistrationError"),
+            registration_error=aligned("RegistrationError"),
             orthogonality_residual=field_value(result, "RefinementOrthogonalityResidual"),
             stored_bases=int(sum(field_value(result, "RefinementStoredBasisUsed", k) == 1 for k in range(2))),
             distance=math.sqrt(max(0.0, (1.0 - rho) / 2.0)))

@@ -61,6 +61,9 @@ inline constexpr NumberRange FlowToleranceRange{ MinimumFlowTolerance, 1.0 };
 
 struct RegistrationParameters
 {
+  /// The inputs are centered spherical maps already (vtkMobiusCenter outputs, e.g. a
+  /// collection's maps computed once per shape): the job starts at the rotational alignment.
+  bool InputsAreCenteredMaps = false;
   // Conformal map (vtkSphericalConformalMap)
   int FlowIterations = ConformalMapParameters().MaximumNumberOfIterations;
   double FlowTolerance = ConformalMapParameters().ConvergenceTolerance;
