@@ -457,7 +457,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     mobius::vtk::RemoveBasisArrays(output);
 
     vtkFieldData* fieldData = output->GetFieldData();
-    mobius::vtk::SetFieldValue(fieldData, "RefinementCandidate", bestCandidate);
+    mobius::vtk::SetFieldInteger(fieldData, "RefinementCandidate", bestCandidate);
     std::vector<double> residuals, coverage, orientation, curvature;
     for (const mobius::SampleMap& map : screened)
     {
@@ -475,11 +475,11 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     mobius::vtk::SetFieldValues(fieldData, "RefinementConfidence", confidence, 3);
     AddMapStretch(maps[0], output);
     mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationAgreement", best.OrientationAgreement);
-    mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationRepaired", reversed ? 1 : 0);
+    mobius::vtk::SetFieldInteger(fieldData, "RefinementOrientationRepaired", reversed ? 1 : 0);
     mobius::vtk::SetFieldValue(
       fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
-    mobius::vtk::SetFieldValue(
-      fieldData, "RefinementBasisSize", static_cast<double>(dense.FunctionalMap.cols()));
+    mobius::vtk::SetFieldInteger(
+      fieldData, "RefinementBasisSize", static_cast<int>(dense.FunctionalMap.cols()));
     if (this->RecordTimings)
     {
       const double seconds[4] = { basisSeconds, candidateSeconds, extensionSeconds, polishSeconds };
@@ -487,7 +487,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     }
     const double storedBases[2] = { stored[0] ? 1.0 : 0.0, stored[1] ? 1.0 : 0.0 };
     mobius::vtk::SetFieldValues(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
-    mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
+    mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
   }
   this->UpdateProgress(1.0);
   return 1;

@@ -121,9 +121,10 @@ int vtkDenseCorrespondence::ComputeOutput(
     vtkWarningMacro(<< (located == 1 ? "Target: " : "Source: ") << arrayWarning << ".");
   }
 
-  mobius::vtk::SetFieldValue(output->GetFieldData(), "ClampedPoints", static_cast<double>(clamped));
+  mobius::vtk::SetFieldCount(
+    output->GetFieldData(), "ClampedPoints", static_cast<vtkIdType>(clamped));
   mobius::vtk::SetFieldValue(output->GetFieldData(), "MaximumClampDistance", maximumClampDistance);
-  mobius::vtk::SetFieldValue(output->GetFieldData(), "NumberOfThreadsUsed", threads);
+  mobius::vtk::SetFieldInteger(output->GetFieldData(), "NumberOfThreadsUsed", threads);
   this->UpdateProgress(1.0);
   return 1;
 }

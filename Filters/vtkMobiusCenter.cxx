@@ -109,9 +109,9 @@ int vtkMobiusCenter::ComputeOutput(
   mobius::vtk::SetFieldValue(fieldData, "CenterOfMassNorm", result.CenterOfMassNorm);
   mobius::vtk::SetFieldValue(
     fieldData, "InitialCenterOfMassNorm", result.InitialCenterOfMassNorm);
-  mobius::vtk::SetFieldValue(fieldData, "CenteringIterations", result.NumberOfIterations);
-  mobius::vtk::SetFieldValue(fieldData, "CenteringDegree", this->Degree);
-  mobius::vtk::SetFieldValue(
+  mobius::vtk::SetFieldInteger(fieldData, "CenteringIterations", result.NumberOfIterations);
+  mobius::vtk::SetFieldInteger(fieldData, "CenteringDegree", this->Degree);
+  mobius::vtk::SetFieldInteger(
     fieldData, "GeneralizedCenteringIterations", generalized.NumberOfIterations);
   double lorentz[16];
   for (int r = 0; r < 4; ++r)

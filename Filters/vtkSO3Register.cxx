@@ -229,16 +229,16 @@ int vtkSO3Register::ComputeOutput(
   vtkFieldData* fieldData = output->GetFieldData();
   const auto transform = RowMajor(result.Transform);
   mobius::vtk::SetFieldValues(fieldData, "Rotation", transform.data(), 9);
-  mobius::vtk::SetFieldValue(fieldData, "Determinant", result.Determinant);
+  mobius::vtk::SetFieldInteger(fieldData, "Determinant", static_cast<int>(result.Determinant));
   mobius::vtk::SetFieldValues(fieldData, "EulerAngles", result.EulerAngles.data(), 3);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationScore", result.Score);
   mobius::vtk::SetFieldValue(fieldData, "RegistrationError", result.RegistrationError);
   const double coarseErrors[2] = { mirroring.ChosenError, mirroring.OtherError };
   mobius::vtk::SetFieldValues(fieldData, "MirrorCheckErrors", coarseErrors, 2);
   mobius::vtk::SetFieldValue(fieldData, "CorrelationCoefficient", result.CorrelationCoefficient);
-  mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
-  mobius::vtk::SetFieldValue(fieldData, "CorrelationBandwidth", result.CorrelationBandwidth);
-  mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
+  mobius::vtk::SetFieldInteger(fieldData, "Resolution", this->Resolution);
+  mobius::vtk::SetFieldInteger(fieldData, "CorrelationBandwidth", result.CorrelationBandwidth);
+  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
   std::vector<std::vector<double>> transforms, scores, errors, coefficients;
   for (const auto& candidate : result.Candidates)
   {

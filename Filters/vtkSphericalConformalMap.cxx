@@ -418,13 +418,16 @@ int vtkSphericalConformalMap::ComputeOutput(
   mobius::vtk::AddDistortionArrays(output, "QuasiConformalDistortion");
 
   vtkFieldData* fieldData = output->GetFieldData();
+  using mobius::vtk::SetFieldCount;
+  using mobius::vtk::SetFieldInteger;
   using mobius::vtk::SetFieldValue;
-  SetFieldValue(fieldData, "ConformalFlowIterations", result.Iterations);
+  SetFieldInteger(fieldData, "ConformalFlowIterations", result.Iterations);
   SetFieldValue(fieldData, "ConformalFlowRelativeChange", result.RelativeChange);
-  SetFieldValue(fieldData, "ConformalFlowConverged", result.Converged ? 1 : 0);
-  SetFieldValue(fieldData, "ConformalFlowLinearStart", result.LinearStart ? 1 : 0);
-  SetFieldValue(fieldData, "ConformalFlowFactorizations", result.Factorizations);
-  SetFieldValue(fieldData, "FlippedTriangles", static_cast<double>(result.Distortion.FlippedTriangles));
+  SetFieldInteger(fieldData, "ConformalFlowConverged", result.Converged ? 1 : 0);
+  SetFieldInteger(fieldData, "ConformalFlowLinearStart", result.LinearStart ? 1 : 0);
+  SetFieldInteger(fieldData, "ConformalFlowFactorizations", result.Factorizations);
+  SetFieldCount(
+    fieldData, "FlippedTriangles", static_cast<vtkIdType>(result.Distortion.FlippedTriangles));
   SetFieldValue(fieldData, "MeanQuasiConformalDistortion", result.Distortion.MeanQuasiConformal);
   SetFieldValue(fieldData, "MaxQuasiConformalDistortion", result.Distortion.MaxQuasiConformal);
   SetFieldValue(fieldData, "MedianQuasiConformalDistortion", result.Distortion.MedianQuasiConformal);
@@ -434,15 +437,15 @@ int vtkSphericalConformalMap::ComputeOutput(
   SetFieldValue(fieldData, "SmallestSphereAreaShare", result.Distortion.SmallestMappedAreaShare);
   const double areaRange[2] = { result.Distortion.MinAreaRatio, result.Distortion.MaxAreaRatio };
   mobius::vtk::SetFieldValues(fieldData, "AreaDistortionRange", areaRange, 2);
-  SetFieldValue(fieldData, "IntrinsicDelaunayUsed", result.IntrinsicDelaunayUsed ? 1 : 0);
-  SetFieldValue(fieldData, "IntrinsicDelaunayFlips", static_cast<double>(result.IntrinsicFlips));
-  SetFieldValue(fieldData, "MergedDuplicatePoints", static_cast<double>(duplicates));
-  SetFieldValue(fieldData, "FilledHoles", static_cast<double>(filledHoles));
-  SetFieldValue(fieldData, "ReversedTriangleOrientation", reversed ? 1 : 0);
-  SetFieldValue(
-    fieldData, "FlipRepairMovedVertices", static_cast<double>(result.FlipRepair.MovedVertices));
-  SetFieldValue(fieldData, "SqueezedRegionRefinementFailed", result.Refinement.Success ? 0 : 1);
-  SetFieldValue(fieldData, "DegenerateMap", verdict.Degenerate() ? 1 : 0);
+  SetFieldInteger(fieldData, "IntrinsicDelaunayUsed", result.IntrinsicDelaunayUsed ? 1 : 0);
+  SetFieldCount(fieldData, "IntrinsicDelaunayFlips", static_cast<vtkIdType>(result.IntrinsicFlips));
+  SetFieldCount(fieldData, "MergedDuplicatePoints", static_cast<vtkIdType>(duplicates));
+  SetFieldInteger(fieldData, "FilledHoles", static_cast<int>(filledHoles));
+  SetFieldInteger(fieldData, "ReversedTriangleOrientation", reversed ? 1 : 0);
+  SetFieldCount(
+    fieldData, "FlipRepairMovedVertices", static_cast<vtkIdType>(result.FlipRepair.MovedVertices));
+  SetFieldInteger(fieldData, "SqueezedRegionRefinementFailed", result.Refinement.Success ? 0 : 1);
+  SetFieldInteger(fieldData, "DegenerateMap", verdict.Degenerate() ? 1 : 0);
   vtkNew<vtkStringArray> reason;
   reason->SetName("DegenerateMapReason");
   reason->InsertNextValue(degenerateReason);

@@ -261,7 +261,7 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
   output->GetCellData()->AddArray(cellCopy);
   vtkFieldData* fields = output->GetFieldData();
   fields->PassData(map->GetFieldData());
-  mobius::vtk::SetFieldValue(fields, "NumberOfCopies", this->NumberOfCopies);
+  mobius::vtk::SetFieldInteger(fields, "NumberOfCopies", this->NumberOfCopies);
   AddIds(fields, "ConeIds", { inputIds[result.Cones[0]], inputIds[result.Cones[1]] }, 2);
   std::vector<vtkIdType> cut;
   for (const mobius::Index v : covering.CutPath)
@@ -271,11 +271,13 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
   AddIds(fields, "CutPathPointIds", cut);
   mobius::vtk::SetFieldValue(fields, "SymmetryError", result.Symmetry.MaximumDistance);
   mobius::vtk::SetFieldValue(fields, "ConeAntipodality", result.ConeAntipodality);
-  mobius::vtk::SetFieldValue(fields, "FlippedTriangles", static_cast<double>(result.FlippedTriangles));
+  mobius::vtk::SetFieldCount(
+    fields, "FlippedTriangles", static_cast<vtkIdType>(result.FlippedTriangles));
   mobius::vtk::SetFieldValue(fields, "StdLogAreaRatio", result.OrbifoldAreaDistortion.StdLogAreaRatio);
   mobius::vtk::SetFieldValue(fields, "PlainStdLogAreaRatio", result.PlainAreaDistortion.StdLogAreaRatio);
-  mobius::vtk::SetFieldValue(fields, "ConformalFlowIterations", result.CoveringFlow.Iterations);
-  mobius::vtk::SetFieldValue(fields, "ConformalFlowConverged", result.CoveringFlow.Converged ? 1.0 : 0.0);
+  mobius::vtk::SetFieldInteger(fields, "ConformalFlowIterations", result.CoveringFlow.Iterations);
+  mobius::vtk::SetFieldInteger(
+    fields, "ConformalFlowConverged", result.CoveringFlow.Converged ? 1 : 0);
   this->UpdateProgress(1.0);
   return 1;
 }

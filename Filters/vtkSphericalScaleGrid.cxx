@@ -191,12 +191,12 @@ int vtkSphericalScaleGrid::ComputeOutput(
   output->GetCellData()->SetActiveScalars("ConformalFactorSmoothed");
 
   vtkFieldData* fieldData = output->GetFieldData();
-  mobius::vtk::SetFieldValue(fieldData, "Resolution", this->Resolution);
-  mobius::vtk::SetFieldValue(fieldData, "Bandwidth", this->Resolution / 2);
+  mobius::vtk::SetFieldInteger(fieldData, "Resolution", this->Resolution);
+  mobius::vtk::SetFieldInteger(fieldData, "Bandwidth", this->Resolution / 2);
   mobius::vtk::SetFieldValue(fieldData, "TotalArea", signal.Grid.TotalArea);
   mobius::vtk::SetFieldValue(fieldData, "SmoothingTime", this->SmoothingTime);
-  mobius::vtk::SetFieldValue(fieldData, "ValueMode", this->ValueMode);
-  mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
+  mobius::vtk::SetFieldInteger(fieldData, "ValueMode", this->ValueMode);
+  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
   const std::vector<double> energies = mobius::DegreeEnergies(signal.Coefficients);
   mobius::vtk::SetFieldValues(
     fieldData, "DegreeEnergies", energies.data(), static_cast<int>(energies.size()));

@@ -336,10 +336,10 @@ int vtkSymmetryDetection::ComputeOutput(
   AddTuples(fieldData, "CandidateMirrorPlaneNormals", 3, normals);
   mobius::vtk::SetFieldValue(fieldData, "MeanAsymmetry", asymmetry.mean());
   mobius::vtk::SetFieldValue(fieldData, "MaximumAsymmetry", asymmetry.maxCoeff());
-  mobius::vtk::SetFieldValue(fieldData, "SymmetryCentered", this->Centering ? 1 : 0);
-  mobius::vtk::SetFieldValue(fieldData, "SymmetryRefined", refine ? 1 : 0);
-  mobius::vtk::SetFieldValue(fieldData, "SnappedVertices", static_cast<double>(snapped));
-  mobius::vtk::SetFieldValue(fieldData, "NumberOfThreadsUsed", threads);
+  mobius::vtk::SetFieldInteger(fieldData, "SymmetryCentered", this->Centering ? 1 : 0);
+  mobius::vtk::SetFieldInteger(fieldData, "SymmetryRefined", refine ? 1 : 0);
+  mobius::vtk::SetFieldCount(fieldData, "SnappedVertices", static_cast<vtkIdType>(snapped));
+  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
   this->UpdateProgress(1.0);
   return 1;
 }

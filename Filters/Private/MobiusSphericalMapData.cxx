@@ -9,11 +9,13 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -305,6 +307,30 @@ void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* val
 void SetFieldValue(vtkFieldData* fieldData, const char* name, double value)
 {
   SetFieldValues(fieldData, name, &value, 1);
+}
+
+namespace
+{
+template <typename ArrayType, typename Value>
+void SetOneValue(vtkFieldData* fieldData, const char* name, Value value)
+{
+  vtkNew<ArrayType> array;
+  array->SetName(name);
+  array->SetNumberOfTuples(1);
+  array->SetValue(0, value);
+  fieldData->RemoveArray(name);
+  fieldData->AddArray(array);
+}
+}
+
+void SetFieldInteger(vtkFieldData* fieldData, const char* name, int value)
+{
+  SetOneValue<vtkIntArray>(fieldData, name, value);
+}
+
+void SetFieldCount(vtkFieldData* fieldData, const char* name, vtkIdType value)
+{
+  SetOneValue<vtkIdTypeArray>(fieldData, name, value);
 }
 
 void AddDistortionArrays(vtkPolyData* map, const char* active)

@@ -13,6 +13,7 @@
 #define MobiusSphericalMapData_h
 
 #include "MeshTypes.h"
+#include "vtkType.h" // For vtkIdType
 
 #include <string>
 
@@ -86,6 +87,11 @@ void AddDistortionArrays(vtkPolyData* map, const char* active);
 /// Adds (or replaces) a named field-data array with one tuple of `count` components.
 void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count);
 void SetFieldValue(vtkFieldData* fieldData, const char* name, double value);
+/// The same with one integer (docs/data-contract.md, "Types of field values"): a 0/1 flag,
+/// a setting or a small count (iterations, threads, a candidate) in a vtkIntArray; a count
+/// of mesh elements (points, vertices, triangles, edges) in a vtkIdTypeArray.
+void SetFieldInteger(vtkFieldData* fieldData, const char* name, int value);
+void SetFieldCount(vtkFieldData* fieldData, const char* name, vtkIdType value);
 }
 }
 

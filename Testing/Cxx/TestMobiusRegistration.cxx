@@ -120,6 +120,17 @@ int CompareWithChain(vtkPolyData* source, vtkPolyData* target, bool refine)
     field(sourceMap->GetOutput(), "MeanQuasiConformalDistortion"), "SourceMap distortion");
   failures += ExpectSameArray(field(a, "TargetCentering.CenterOfMassNorm"),
     field(targetCentered->GetOutput(), "CenterOfMassNorm"), "TargetCentering.CenterOfMassNorm");
+  // Flags and small counts are vtkIntArray, counts of mesh elements vtkIdTypeArray
+  // (docs/data-contract.md), through the stage prefixes too.
+  for (const char* name : { "SourceMap.DegenerateMap", "SourceMap.ConformalFlowIterations",
+         "Registration.Determinant", "TargetCentering.CenteringDegree" })
+  {
+    MOBIUS_EXPECT(field(a, name) && field(a, name)->IsA("vtkIntArray"));
+  }
+  MOBIUS_EXPECT(field(a, "SourceMap.FlippedTriangles") &&
+    field(a, "SourceMap.FlippedTriangles")->IsA("vtkIdTypeArray"));
+  MOBIUS_EXPECT(field(a, "Registration.Determinant") &&
+    field(a, "Registration.Determinant")->GetComponent(0, 0) == 1);
   // Ports 1 and 2: the aligned source sphere and the target sphere, the chain's.
   failures += ExpectSameArray(whole->GetOutput(1)->GetPoints()->GetData(),
     registration->GetOutput()->GetPoints()->GetData(), "port 1 points");
