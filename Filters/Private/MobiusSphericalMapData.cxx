@@ -288,6 +288,17 @@ void SetPoints(vtkPolyData* output, const Points& points)
   output->SetPoints(vtkpoints);
 }
 
+void SetTriangles(vtkPolyData* output, const Triangles& triangles)
+{
+  vtkNew<vtkCellArray> polys;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const vtkIdType ids[3] = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPolys(polys);
+}
+
 void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count)
 {
   vtkNew<vtkDoubleArray> array;

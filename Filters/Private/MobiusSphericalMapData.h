@@ -74,6 +74,9 @@ int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);
 
+/// Replaces the output's polygons by `triangles`.
+void SetTriangles(vtkPolyData* output, const Triangles& triangles);
+
 /// Per-triangle distortion of the map from the surface (point array `SurfacePoints`) to
 /// the output's points, as cell arrays to color the map by: `QuasiConformalDistortion`
 /// (sigma_max / sigma_min of the triangle's linear map, 1 where it is conformal) and
