@@ -214,10 +214,7 @@ mobius::CorrespondenceRefinementOptions RefinementOptions(
     : mobius::CandidateCriterion::Curvature;
   options.Candidate = filter->GetCandidate();
   options.GeometricPolish = filter->GetGeometricPolish();
-  options.Progress = [filter](double fraction) {
-    filter->UpdateProgress(fraction);
-    return !filter->GetAbortExecute();
-  };
+  options.Progress = mobius::vtk::ProgressAndAbort(filter);
   return options;
 }
 

@@ -69,9 +69,19 @@ void CopyAttributes(vtkDataSetAttributes* source, vtkDataSetAttributes* target,
   }
 }
 
-// Triangles only: polygons and strips split, vertices and lines dropped (with their data).
-vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
+// The input's triangles: polygons and strips split, vertices and lines dropped (with their
+// data, and a warning).
+vtkSmartPointer<vtkPolyData> TriangleSurface(vtkSphericalConformalMap* filter, vtkPolyData* input)
 {
+  if (!NeedsTriangulation(input))
+  {
+    return input;
+  }
+  if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)
+  {
+    vtkWarningWithObjectMacro(filter, << "Ignoring " << input->GetNumberOfVerts() << " vertex and "
+                                      << input->GetNumberOfLines() << " line cells of the input.");
+  }
   vtkNew<vtkPolyData> shallow;
   shallow->ShallowCopy(input);
   vtkNew<vtkTriangleFilter> triangulate;
@@ -80,6 +90,48 @@ vtkSmartPointer<vtkPolyData> Triangulate(vtkPolyData* input)
   triangulate->PassLinesOff();
   triangulate->Update();
   return triangulate->GetOutput();
+}
+
+// The mesh the flow runs on, and what the output needs of its preparation.
+struct FlowMesh
+{
+  mobius::RepairedMesh Mesh; ///< scaled by 2^-ScaleExponent, facing outward
+  int ScaleExponent = 0;
+  bool ReversedTriangles = false; ///< turned to face outward
+  mobius::Vector SurfaceAreas;    ///< per triangle, at the input's scale
+};
+
+// Extracts, rescales and repairs the surface for the flow; the reason it cannot be mapped
+// if it cannot.
+std::string PrepareFlowMesh(
+  vtkSphericalConformalMap* filter, vtkPolyData* input, vtkPolyData* surface, FlowMesh& flowMesh)
+{
+  mobius::Points points;
+  mobius::Triangles triangles;
+  std::string error = mobius::vtk::ExtractPoints(surface, points);
+  error = error.empty() ? mobius::vtk::ExtractTriangles(surface, triangles) : error;
+  if (!error.empty())
+  {
+    return error;
+  }
+  flowMesh.ScaleExponent = mobius::ScaleToUnitOrder(points);
+  mobius::RepairedMesh& mesh = flowMesh.Mesh;
+  mesh = mobius::RepairMesh(std::move(points), std::move(triangles),
+    { filter->GetFillHoles() != 0, filter->GetKeepLargestComponent() != 0 });
+  if (!mesh.Problem.empty())
+  {
+    return mesh.Problem;
+  }
+  if (mesh.Topology.UnusedPoints > 0 || mesh.Points.rows() != input->GetNumberOfPoints())
+  {
+    vtkWarningWithObjectMacro(filter, << "The output has " << mesh.Points.rows()
+                                      << " points, the input " << input->GetNumberOfPoints()
+                                      << " (duplicates merged, unused points dropped, holes filled).");
+  }
+  flowMesh.ReversedTriangles = mobius::FaceOutward(mesh.Points, mesh.Triangles);
+  mobius::TriangleAreasAtScale(
+    mesh.Points, mesh.Triangles, flowMesh.ScaleExponent, flowMesh.SurfaceAreas, error);
+  return error;
 }
 
 vtkSmartPointer<vtkDoubleArray> NamedDoubleArray(const char* name, int components, vtkIdType tuples)
@@ -93,12 +145,13 @@ vtkSmartPointer<vtkDoubleArray> NamedDoubleArray(const char* name, int component
 
 // The per-point and per-triangle arrays of the map: the surface positions at the input's
 // scale, the input point each point came from, the triangles' surface areas.
-void AddSurfaceArrays(
-  const mobius::RepairedMesh& mesh, int scaleExponent, const mobius::Vector& areas, vtkPolyData* output)
+void AddSurfaceArrays(const FlowMesh& flowMesh, vtkPolyData* output)
 {
+  const mobius::RepairedMesh& mesh = flowMesh.Mesh;
   const mobius::Points& points = mesh.Points;
+  const mobius::Vector& areas = flowMesh.SurfaceAreas;
   auto surfacePoints = NamedDoubleArray(mobius::vtk::SurfacePointsArrayName, 3, points.rows());
-  const double restore = std::ldexp(1.0, scaleExponent); // the input's scale, exactly
+  const double restore = std::ldexp(1.0, flowMesh.ScaleExponent); // the input's scale, exactly
   for (Eigen::Index i = 0; i < points.rows(); ++i)
   {
     surfacePoints->SetTuple3(i, restore * points(i, 0), restore * points(i, 1), restore * points(i, 2));
@@ -131,9 +184,10 @@ void AddStringValue(vtkFieldData* fieldData, const char* name, const std::string
 }
 
 // The flow's figures, the map's distortion, the repairs and the verdict, as field data.
-void AddMapFieldData(const mobius::ConformalMapResult& result, const mobius::RepairedMesh& mesh,
-  bool reversed, const mobius::MapVerdict& verdict, vtkFieldData* fieldData)
+void AddMapFieldData(const mobius::ConformalMapResult& result, const FlowMesh& flowMesh,
+  const mobius::MapVerdict& verdict, vtkFieldData* fieldData)
 {
+  const mobius::RepairedMesh& mesh = flowMesh.Mesh;
   using mobius::vtk::SetFieldValue;
   const mobius::MapDistortion& distortion = result.Distortion;
   SetFieldValue(fieldData, "ConformalFlowIterations", result.Iterations);
@@ -155,7 +209,7 @@ void AddMapFieldData(const mobius::ConformalMapResult& result, const mobius::Rep
   SetFieldValue(fieldData, "IntrinsicDelaunayFlips", static_cast<double>(result.IntrinsicFlips));
   SetFieldValue(fieldData, "MergedDuplicatePoints", static_cast<double>(mesh.MergedDuplicatePoints));
   SetFieldValue(fieldData, "FilledHoles", static_cast<double>(mesh.FilledHoles));
-  SetFieldValue(fieldData, "ReversedTriangleOrientation", reversed ? 1 : 0);
+  SetFieldValue(fieldData, "ReversedTriangleOrientation", flowMesh.ReversedTriangles ? 1 : 0);
   SetFieldValue(
     fieldData, "FlipRepairMovedVertices", static_cast<double>(result.FlipRepair.MovedVertices));
   SetFieldValue(fieldData, "SqueezedRegionRefinementFailed", result.Refinement.Success ? 0 : 1);
@@ -205,10 +259,7 @@ mobius::ConformalMapParameters FlowParameters(vtkSphericalConformalMap* filter,
   parameters.MobiusCentering = filter->GetCenterBetweenSteps();
   parameters.LinearStart = filter->GetLinearStart();
   parameters.ReuseFactorization = filter->GetReuseFactorization();
-  parameters.Progress = [filter](double fraction) {
-    filter->UpdateProgress(fraction);
-    return !filter->GetAbortExecute();
-  };
+  parameters.Progress = mobius::vtk::ProgressAndAbort(filter);
   return parameters;
 }
 }
@@ -237,46 +288,15 @@ int vtkSphericalConformalMap::ComputeOutput(
     vtkErrorMacro(<< inputError);
     return 0;
   }
-  vtkSmartPointer<vtkPolyData> surface = input;
-  if (NeedsTriangulation(input))
+  const vtkSmartPointer<vtkPolyData> surface = TriangleSurface(this, input);
+  FlowMesh flowMesh;
+  const std::string meshError = PrepareFlowMesh(this, input, surface, flowMesh);
+  if (!meshError.empty())
   {
-    if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)
-    {
-      vtkWarningMacro(<< "Ignoring " << input->GetNumberOfVerts() << " vertex and "
-                      << input->GetNumberOfLines() << " line cells of the input.");
-    }
-    surface = Triangulate(input);
-  }
-  mobius::Points points;
-  mobius::Triangles triangles;
-  std::string error = mobius::vtk::ExtractPoints(surface, points);
-  error = error.empty() ? mobius::vtk::ExtractTriangles(surface, triangles) : error;
-  const int scaleExponent = error.empty() ? mobius::ScaleToUnitOrder(points) : 0;
-  mobius::RepairedMesh mesh;
-  if (error.empty())
-  {
-    mesh = mobius::RepairMesh(std::move(points), std::move(triangles),
-      { this->FillHoles != 0, this->KeepLargestComponent != 0 });
-    error = mesh.Problem;
-  }
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< "Cannot map the mesh to the sphere: " << error << ".");
+    vtkErrorMacro(<< "Cannot map the mesh to the sphere: " << meshError << ".");
     return 0;
   }
-  if (mesh.Topology.UnusedPoints > 0 || mesh.Points.rows() != input->GetNumberOfPoints())
-  {
-    vtkWarningMacro(<< "The output has " << mesh.Points.rows() << " points, the input "
-                    << input->GetNumberOfPoints()
-                    << " (duplicates merged, unused points dropped, holes filled).");
-  }
-  const bool reversed = mobius::FaceOutward(mesh.Points, mesh.Triangles);
-  mobius::Vector surfaceAreas;
-  if (!mobius::TriangleAreasAtScale(mesh.Points, mesh.Triangles, scaleExponent, surfaceAreas, error))
-  {
-    vtkErrorMacro(<< "Cannot map the mesh to the sphere: " << error << ".");
-    return 0;
-  }
+  const mobius::RepairedMesh& mesh = flowMesh.Mesh;
   const mobius::ConformalMapResult result = mobius::ComputeSphericalConformalMap(
     mesh.Points, mesh.Triangles, FlowParameters(this, mesh.Points, mesh.Triangles));
   if (!result.Success)
@@ -303,10 +323,10 @@ int vtkSphericalConformalMap::ComputeOutput(
   CopyAttributes(surface->GetPointData(), output->GetPointData(), mesh.Provenance.PointSource);
   CopyAttributes(surface->GetCellData(), output->GetCellData(), mesh.Provenance.TriangleSource);
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
-  AddSurfaceArrays(mesh, scaleExponent, surfaceAreas, output);
+  AddSurfaceArrays(flowMesh, output);
   // Colored by default by how far each triangle is from conformal.
   mobius::vtk::AddDistortionArrays(output, "QuasiConformalDistortion");
-  AddMapFieldData(result, mesh, reversed, verdict, output->GetFieldData());
+  AddMapFieldData(result, flowMesh, verdict, output->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -276,6 +276,14 @@ int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
   return 0;
 }
 
+std::function<bool(double)> ProgressAndAbort(vtkAlgorithm* filter)
+{
+  return [filter](double fraction) {
+    filter->UpdateProgress(fraction);
+    return !filter->GetAbortExecute();
+  };
+}
+
 void SetPoints(vtkPolyData* output, const Points& points)
 {
   vtkNew<vtkPoints> vtkpoints;

@@ -14,6 +14,7 @@
 
 #include "MeshTypes.h"
 
+#include <functional>
 #include <string>
 
 class vtkAlgorithm;
@@ -70,6 +71,10 @@ std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints);
 /// when given (a file name), empties the output and returns 0 (RequestData's failure).
 int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
   const std::string& subject = {});
+
+/// A core progress callback for `filter`: reports the fraction done as the filter's progress
+/// and returns false once the filter is asked to abort.
+std::function<bool(double)> ProgressAndAbort(vtkAlgorithm* filter);
 
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);
