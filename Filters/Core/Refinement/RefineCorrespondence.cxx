@@ -70,6 +70,86 @@ public:
 private:
   std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
 };
+// Per candidate, the orientation its map should have and the anchor that holds it on its
+// side of the sphere.
+struct Candidates
+{
+  std::vector<bool> Preserve;
+  std::vector<SampleAnchor> Anchors;
+};
+
+Candidates SetUpCandidates(const SpectralSurface& source, const SpectralSurface& target,
+  const RegisteredSpheres& spheres, const CorrespondenceRefinementOptions& options)
+{
+  Candidates candidates;
+  const double bestDeterminant = spheres.BestReflects ? -1.0 : 1.0;
+  for (const RotationMatrix& start : spheres.Starts)
+  {
+    candidates.Preserve.push_back(start.determinant() * bestDeterminant > 0);
+    candidates.Anchors.push_back(
+      SphereAnchor(start, source.Samples, target.Samples, spheres, options.SphereAnchorWeight));
+  }
+  return candidates;
+}
+
+// Every candidate's map up to the screening size, each held on its side of the sphere. The
+// candidates are independent and each one's sample ZoomOut is too small (1000 samples) to
+// keep several threads busy: one candidate per thread.
+std::vector<SampleMap> ScreenCandidates(const SpectralSurface& source,
+  const SpectralSurface& target, const RegisteredSpheres& spheres,
+  const Candidates& candidates, const CorrespondenceRefinementOptions& options)
+{
+  std::vector<SampleMap> screened(spheres.Starts.size());
+  ZoomOutParameters oneThread = options.ZoomOut;
+  oneThread.NumberOfThreads = 1;
+  ParallelFor(static_cast<int>(screened.size()), options.ZoomOut.NumberOfThreads, [&](int c, int) {
+    ZoomOutParameters own = oneThread;
+    own.Orientation = ExpectedOrientation(options, candidates.Preserve[c]);
+    screened[c] = ZoomOutOnSamples(source, target,
+      StartingSampleMap(spheres.Starts[c], source.Samples, spheres), own, candidates.Anchors[c]);
+  });
+  return screened;
+}
+
+// The kept candidate's map, its orientation repaired if it is wrong, grown to the full
+// basis; `parameters` ends as the growth's, which the extension goes on with.
+SampleMap FinishKeptMap(const SpectralSurface& source, const SpectralSurface& target,
+  const RefinedCorrespondence& refined, bool preserve, const SampleAnchor& anchor,
+  const CorrespondenceRefinementOptions& options, ZoomOutParameters& parameters)
+{
+  SampleMap kept = refined.Screened[refined.Choice.Kept];
+  // A map that still has the wrong orientation (no candidate reached the right one) is
+  // retried from its low-frequency functional map with signs flipped.
+  if (refined.WrongOrientation && options.RepairOrientation)
+  {
+    kept = RepairOrientation(source, target, kept, preserve, 9, parameters, anchor);
+  }
+  if (parameters.FinalSize < options.BasisSize)
+  {
+    parameters.StartSize = NextBasisSize(parameters.FinalSize, parameters.Growth);
+    parameters.FinalSize = options.BasisSize;
+    parameters.Orientation = ExpectedOrientation(options, preserve);
+    kept = ZoomOutOnSamples(source, target, kept.TargetVertex, parameters, anchor);
+  }
+  return kept;
+}
+
+// The dense map moved on the surfaces (SurfacePolish); the error if the polish failed.
+std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& kept, int numberOfThreads, DenseMap& dense)
+{
+  // On the scaled surfaces the spectral bases were computed on: the polish scales the
+  // source to the target's area itself, and the map is triangles and barycentrics.
+  SurfacePolishParameters polish;
+  polish.NumberOfThreads = numberOfThreads;
+  // A mirror image (an orientation-reversing map: a reflection's, or a symmetry's) is
+  // polished as a rotation of the mirrored source.
+  polish.ReverseOrientation = kept.OrientationAgreement < 0.5;
+  SurfacePolishInfo info;
+  const bool polished = PolishSurfaceMap(source.Positions, source.Faces, target.Positions,
+    target.Faces, target.Corners, dense.Triangle, dense.Barycentric, polish, info);
+  return polished ? std::string() : info.Error;
+}
 }
 
 RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
@@ -78,28 +158,8 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
 {
   Stopwatch stopwatch;
   RefinedCorrespondence refined;
-  const std::vector<RotationMatrix>& starts = spheres.Starts;
-  const double bestDeterminant = spheres.BestReflects ? -1.0 : 1.0;
-  std::vector<bool> preserves;
-  std::vector<SampleAnchor> anchors;
-  for (const RotationMatrix& start : starts)
-  {
-    preserves.push_back(start.determinant() * bestDeterminant > 0);
-    anchors.push_back(
-      SphereAnchor(start, source.Samples, target.Samples, spheres, options.SphereAnchorWeight));
-  }
-  // Every candidate up to the screening size, each held on its side of the sphere. The
-  // candidates are independent and each one's sample ZoomOut is too small (1000 samples)
-  // to keep several threads busy: one candidate per thread.
-  refined.Screened.resize(starts.size());
-  ZoomOutParameters oneThread = options.ZoomOut;
-  oneThread.NumberOfThreads = 1;
-  ParallelFor(static_cast<int>(starts.size()), options.ZoomOut.NumberOfThreads, [&](int c, int) {
-    ZoomOutParameters own = oneThread;
-    own.Orientation = ExpectedOrientation(options, preserves[c]);
-    refined.Screened[c] = ZoomOutOnSamples(
-      source, target, StartingSampleMap(starts[c], source.Samples, spheres), own, anchors[c]);
-  });
+  const Candidates candidates = SetUpCandidates(source, target, spheres, options);
+  refined.Screened = ScreenCandidates(source, target, spheres, candidates, options);
   if (options.Progress && !options.Progress(0.7))
   {
     refined.Stopped = true;
@@ -107,9 +167,9 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
   }
   // The one of the expected orientation that keeps the curvature best goes on.
   std::vector<bool> rightSide;
-  for (size_t c = 0; c < starts.size(); ++c)
+  for (size_t c = 0; c < refined.Screened.size(); ++c)
   {
-    rightSide.push_back(HasOrientation(refined.Screened[c], preserves[c]));
+    rightSide.push_back(HasOrientation(refined.Screened[c], candidates.Preserve[c]));
   }
   refined.Choice = ChooseCandidate(refined.Screened, rightSide, target, options.Criterion);
   if (options.Candidate >= 0)
@@ -117,47 +177,21 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
     refined.Choice.Kept = options.Candidate;
   }
   const int kept = refined.Choice.Kept;
-  refined.Kept = refined.Screened[kept];
-  // A map that still has the wrong orientation (no candidate reached the right one) is
-  // retried from its low-frequency functional map with signs flipped.
   refined.WrongOrientation = !rightSide[kept];
   ZoomOutParameters parameters = options.ZoomOut;
-  if (refined.WrongOrientation && options.RepairOrientation)
-  {
-    refined.Kept = RepairOrientation(
-      source, target, refined.Kept, preserves[kept], 9, parameters, anchors[kept]);
-  }
-  if (parameters.FinalSize < options.BasisSize)
-  {
-    parameters.StartSize = NextBasisSize(parameters.FinalSize, parameters.Growth);
-    parameters.FinalSize = options.BasisSize;
-    parameters.Orientation = ExpectedOrientation(options, preserves[kept]);
-    refined.Kept =
-      ZoomOutOnSamples(source, target, refined.Kept.TargetVertex, parameters, anchors[kept]);
-  }
+  refined.Kept = FinishKeptMap(source, target, refined, candidates.Preserve[kept],
+    candidates.Anchors[kept], options, parameters);
   refined.CandidateSeconds = stopwatch.Lap();
   if (options.Progress)
   {
     options.Progress(0.85); // the extension is not stopped
   }
-
   refined.Dense = ExtendToAllVertices(source, target, refined.Kept, parameters);
   refined.ExtensionSeconds = stopwatch.Lap();
   if (options.GeometricPolish)
   {
-    // On the scaled surfaces the spectral bases were computed on: the polish scales the
-    // source to the target's area itself, and the map is triangles and barycentrics.
-    SurfacePolishParameters polish;
-    polish.NumberOfThreads = options.ZoomOut.NumberOfThreads;
-    // A mirror image (an orientation-reversing map: a reflection's, or a symmetry's) is
-    // polished as a rotation of the mirrored source.
-    polish.ReverseOrientation = refined.Kept.OrientationAgreement < 0.5;
-    SurfacePolishInfo info;
-    if (!PolishSurfaceMap(source.Positions, source.Faces, target.Positions, target.Faces,
-          target.Corners, refined.Dense.Triangle, refined.Dense.Barycentric, polish, info))
-    {
-      refined.PolishError = info.Error;
-    }
+    refined.PolishError = PolishDenseMap(
+      source, target, refined.Kept, options.ZoomOut.NumberOfThreads, refined.Dense);
     refined.PolishSeconds = stopwatch.Lap();
   }
   return refined;
