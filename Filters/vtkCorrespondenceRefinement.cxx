@@ -1,16 +1,13 @@
 #include "vtkCorrespondenceRefinement.h"
 
-#include "RegistrationParameters.h"
-#include "CandidateChoice.h"
 #include "CotangentLaplacian.h"
 #include "EdgeStretch.h"
-#include "ParallelFor.h"
-#include "SphericalPointLocator.h"
-#include "SurfacePolish.h"
-#include "ZoomOut.h"
 #include "MobiusCorrespondenceOutput.h"
 #include "MobiusLaplaceBeltramiBasisData.h"
 #include "MobiusSphericalMapData.h"
+#include "ParallelFor.h"
+#include "RefineCorrespondence.h"
+#include "RegistrationParameters.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -23,7 +20,6 @@
 #include "vtkPolyData.h"
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include <algorithm>
 #include <chrono>
@@ -35,6 +31,14 @@ vtkStandardNewMacro(vtkCorrespondenceRefinement);
 
 namespace
 {
+const char* const InputNames[2] = { "Source (port 0)", "Target (port 1)" };
+
+// "Cannot refine: the Target (port 1): <error>."
+std::string InputError(int input, const std::string& error)
+{
+  return std::string("Cannot refine: the ") + InputNames[input] + ": " + error + ".";
+}
+
 // One spherical map of the pipeline, as the core sees it.
 struct MapInput
 {
@@ -78,13 +82,11 @@ std::string ExtractMapInput(vtkPolyData* input, int basisSize, MapInput& map)
   return error;
 }
 
-using Matrix3 = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
-
 // The transforms to start from, as rotations of the already aligned source: the aligned
 // points are T_best x, so candidate T_j is reached by T_j T_best^-1 (T orthogonal).
-std::vector<Matrix3> CandidateStarts(vtkPolyData* aligned, bool searchCandidates)
+std::vector<mobius::RotationMatrix> CandidateStarts(vtkPolyData* aligned, bool searchCandidates)
 {
-  std::vector<Matrix3> starts{ Matrix3::Identity() };
+  std::vector<mobius::RotationMatrix> starts{ mobius::RotationMatrix::Identity() };
   vtkDataArray* best = aligned->GetFieldData()->GetArray("Rotation");
   vtkDataArray* candidates = aligned->GetFieldData()->GetArray("CandidateTransforms");
   if (!searchCandidates || !best || !candidates || best->GetNumberOfComponents() != 9 ||
@@ -92,11 +94,11 @@ std::vector<Matrix3> CandidateStarts(vtkPolyData* aligned, bool searchCandidates
   {
     return starts;
   }
-  Matrix3 bestTransform;
+  mobius::RotationMatrix bestTransform;
   best->GetTuple(0, bestTransform.data());
   for (vtkIdType c = 0; c < candidates->GetNumberOfTuples(); ++c)
   {
-    Matrix3 transform;
+    mobius::RotationMatrix transform;
     candidates->GetTuple(c, transform.data());
     if (!transform.allFinite() || (transform - bestTransform).norm() < 1e-9)
     {
@@ -107,44 +109,171 @@ std::vector<Matrix3> CandidateStarts(vtkPolyData* aligned, bool searchCandidates
   return starts;
 }
 
-// The Möbius map of the source samples under one candidate: each sample rotated by `start`
-// and located on the target sphere, sent to the nearest corner of its triangle.
-std::vector<mobius::Index> StartingSampleMap(const Matrix3& start, const mobius::Points& sourceSphere,
-  const std::vector<mobius::Index>& samples, const mobius::SphericalPointLocator& targetLocator,
-  const mobius::Triangles& targetTriangles)
+// The spectral surfaces of both maps. A basis stored on an input (vtkLaplaceBeltramiBasis)
+// is used when it is this surface's, of BasisSize functions; one of another size is
+// ignored, one of another surface refused. Returns the error, naming the input.
+std::string PrepareSurfaces(vtkCorrespondenceRefinement* filter, vtkPolyData* inputs[2],
+  MapInput maps[2], int threads, mobius::SpectralSurface surfaces[2], bool stored[2])
 {
-  std::vector<mobius::Index> targetVertex(samples.size());
-  for (size_t s = 0; s < samples.size(); ++s)
+  const int basisSize = filter->GetBasisSize();
+  const double massShare = filter->GetConsistentMassShare();
+  std::string errors[2];
+  mobius::LaplaceBeltramiBasis bases[2];
+  for (int k = 0; k < 2; ++k)
   {
-    const Eigen::Vector3d p = start * sourceSphere.row(samples[s]).transpose();
-    const mobius::SphericalLocation location = targetLocator.Locate(p);
-    Eigen::Index corner = 0;
-    location.Barycentric.maxCoeff(&corner);
-    targetVertex[s] = targetTriangles(location.Triangle, corner);
+    const mobius::vtk::StoredBasis found = mobius::vtk::ReadBasisArrays(inputs[k], basisSize,
+      mobius::vtk::SurfaceFingerprint(maps[k].Surface, maps[k].Triangles), bases[k], errors[k]);
+    if (!errors[k].empty())
+    {
+      return InputError(k, errors[k]);
+    }
+    // A stored basis is built with the lumped mass; a blended mass needs its own basis.
+    stored[k] = found == mobius::vtk::StoredBasis::Found && massShare == 0.0;
   }
-  return targetVertex;
+  // After the stored bases were matched: their fingerprints are of the surfaces as stored.
+  for (int k = 0; k < 2; ++k)
+  {
+    mobius::vtk::CenterSurface(maps[k].Surface);
+  }
+  // The two surfaces are independent (each eigensolve runs on one core): side by side
+  // when there are two threads.
+  bool prepared[2] = { false, false };
+  mobius::ParallelFor(2, threads, [&](int k, int) {
+    if (!stored[k])
+    {
+      prepared[k] = mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles, basisSize,
+        filter->GetNumberOfSamples(), surfaces[k], errors[k], massShare);
+    }
+    // The mass is cheap to rebuild, and rebuilt exactly as the eigensolver built it.
+    else if (mobius::BuildUnitAreaMassMatrix(
+               maps[k].Surface, maps[k].Triangles, 0.0, bases[k].Mass, errors[k]))
+    {
+      mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles, std::move(bases[k]),
+        filter->GetNumberOfSamples(), surfaces[k]);
+      prepared[k] = true;
+    }
+  });
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!prepared[k])
+    {
+      return InputError(k, errors[k]);
+    }
+  }
+  return std::string();
 }
 
-// The sphere points of both surfaces' samples, the source's turned by `start`: what keeps a
-// candidate's ZoomOut on the side its rotation put it (mobius::SampleAnchor).
-mobius::SampleAnchor SphereAnchor(const Matrix3& start, const mobius::Points& sourceSphere,
-  const std::vector<mobius::Index>& sourceSamples, const mobius::Points& targetSphere,
-  const std::vector<mobius::Index>& targetSamples, double weight)
+// Both inputs' maps and spectral surfaces; the error, naming the input, if one cannot be
+// refined.
+std::string PrepareInputs(vtkCorrespondenceRefinement* filter, vtkPolyData* inputs[2],
+  int threads, MapInput maps[2], mobius::SpectralSurface surfaces[2], bool stored[2])
 {
-  mobius::SampleAnchor anchor;
-  anchor.Weight = weight;
-  anchor.Source.resize(static_cast<Eigen::Index>(sourceSamples.size()), 3);
-  for (size_t s = 0; s < sourceSamples.size(); ++s)
+  for (int k = 0; k < 2; ++k)
   {
-    anchor.Source.row(static_cast<Eigen::Index>(s)) =
-      (start * sourceSphere.row(sourceSamples[s]).transpose()).transpose();
+    const std::string error = ExtractMapInput(inputs[k], filter->GetBasisSize(), maps[k]);
+    if (!error.empty())
+    {
+      return InputError(k, error);
+    }
   }
-  anchor.Target.resize(static_cast<Eigen::Index>(targetSamples.size()), 3);
-  for (size_t t = 0; t < targetSamples.size(); ++t)
+  return PrepareSurfaces(filter, inputs, maps, threads, surfaces, stored);
+}
+
+// The correspondence output (vtkDenseCorrespondence's) of the refined map, without the
+// inputs' basis arrays.
+void AssembleOutput(vtkCorrespondenceRefinement* filter, vtkPolyData* inputs[2],
+  const MapInput maps[2], const mobius::RefinedCorrespondence& refined, vtkPolyData* output)
+{
+  const mobius::vtk::SurfaceLocations locations{ &maps[1].Triangles, refined.Dense.Triangle,
+    refined.Dense.Barycentric };
+  const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(inputs[0], inputs[1],
+    locations, filter->GetOutputGeometry() == vtkCorrespondenceRefinement::TARGET, output);
+  if (!arrayWarning.empty())
   {
-    anchor.Target.row(static_cast<Eigen::Index>(t)) = targetSphere.row(targetSamples[t]);
+    vtkWarningWithObjectMacro(filter, << "Target: " << arrayWarning << ".");
   }
-  return anchor;
+  mobius::vtk::RemoveBasisArrays(output);
+}
+
+// The filter's settings, progress and abort as the core's options.
+mobius::CorrespondenceRefinementOptions RefinementOptions(
+  vtkCorrespondenceRefinement* filter, int threads)
+{
+  mobius::CorrespondenceRefinementOptions options;
+  options.ZoomOut.StartSize = filter->GetStartBasisSize();
+  options.ZoomOut.Growth = filter->GetBasisGrowth();
+  options.ZoomOut.FinalSize =
+    mobius::ClampToBasisSize(filter->GetScreeningBasisSize(), filter->GetBasisSize());
+  options.ZoomOut.FullResolutionIterations = filter->GetFullResolutionIterations();
+  options.ZoomOut.NumberOfThreads = threads;
+  options.BasisSize = filter->GetBasisSize();
+  options.RepairOrientation = filter->GetRepairOrientation();
+  options.SphereAnchorWeight = filter->GetSphereAnchorWeight();
+  options.Criterion = filter->GetCandidateCriterion() == vtkCorrespondenceRefinement::ORTHOGONALITY
+    ? mobius::CandidateCriterion::Orthogonality
+    : mobius::CandidateCriterion::Curvature;
+  options.Candidate = filter->GetCandidate();
+  options.GeometricPolish = filter->GetGeometricPolish();
+  options.Progress = mobius::vtk::ProgressAndAbort(filter);
+  return options;
+}
+
+// The warning when the kept candidate's runner-up keeps the curvature almost as well;
+// empty when it does not (or there is none).
+std::string NearEqualCandidatesWarning(const mobius::CandidateChoice& choice)
+{
+  if (choice.RunnerUp < 0 || !(choice.Margin < mobius::kNearEqualMargin))
+  {
+    return std::string();
+  }
+  std::ostringstream message;
+  message << "Candidates " << choice.Kept << " (kept) and " << choice.RunnerUp
+          << " give different maps that keep the surfaces' curvature almost equally well "
+             "(margin "
+          << 100 * choice.Margin
+          << "%): the map may be the wrong one of two, such as a body turned half a turn. "
+             "Check it, and keep the other with Candidate = "
+          << choice.RunnerUp << " (mobius-register --candidate " << choice.RunnerUp << ").";
+  return message.str();
+}
+
+// Whether the registration's best transform is a reflection (field data Determinant < 0).
+bool BestReflects(vtkPolyData* aligned)
+{
+  vtkDataArray* determinant = aligned->GetFieldData()->GetArray("Determinant");
+  return determinant && determinant->GetComponent(0, 0) < 0;
+}
+
+// The warnings about a refined map: a near-equal runner-up (unless the candidate was
+// given), a failed polish.
+void WarnAboutRefinement(
+  vtkCorrespondenceRefinement* filter, const mobius::RefinedCorrespondence& refined)
+{
+  const std::string nearEqual =
+    filter->GetCandidate() < 0 ? NearEqualCandidatesWarning(refined.Choice) : std::string();
+  if (!nearEqual.empty())
+  {
+    vtkWarningWithObjectMacro(filter, << nearEqual);
+  }
+  if (!refined.PolishError.empty())
+  {
+    vtkWarningWithObjectMacro(filter, << "The geometric polish failed (" << refined.PolishError
+                                      << "); the spectral map is kept.");
+  }
+}
+
+// Empty when `candidate` (-1: none given) is one of the registration's `count` candidates,
+// else the error.
+std::string CheckCandidate(int candidate, size_t count)
+{
+  if (candidate < static_cast<int>(count))
+  {
+    return std::string();
+  }
+  std::ostringstream message;
+  message << "Candidate " << candidate << " does not exist: the registration has " << count
+          << " candidate" << (count == 1 ? "" : "s") << " (0.." << count - 1 << ").";
+  return message.str();
 }
 
 // The point array MapStretch (mobius::EdgeStretch of the mapped points) and its
@@ -195,6 +324,45 @@ void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector
   fieldData->RemoveArray(name);
   fieldData->AddArray(array);
 }
+
+// The candidates' screening figures, the choice and the refined map's figures as field
+// data, with the MapStretch point array.
+void AddRefinementFieldData(const mobius::RefinedCorrespondence& refined, const MapInput& source,
+  const double stageSeconds[4], const bool stored[2], int threads, vtkPolyData* output)
+{
+  vtkFieldData* fieldData = output->GetFieldData();
+  using mobius::vtk::SetFieldInteger;
+  using mobius::vtk::SetFieldValue;
+  SetFieldInteger(fieldData, "RefinementCandidate", refined.Choice.Kept);
+  std::vector<double> residuals, coverage, orientation, curvature;
+  for (const mobius::SampleMap& map : refined.Screened)
+  {
+    residuals.push_back(map.OrthogonalityResidual);
+    coverage.push_back(map.TargetCoverage);
+    orientation.push_back(map.OrientationAgreement);
+    curvature.push_back(OrMinusOne(map.CurvatureDifference));
+  }
+  SetFieldVector(fieldData, "CandidateOrthogonalityResiduals", residuals);
+  SetFieldVector(fieldData, "CandidateTargetCoverage", coverage);
+  SetFieldVector(fieldData, "CandidateOrientationAgreement", orientation);
+  SetFieldVector(fieldData, "CandidateCurvatureDifferences", curvature);
+  const double confidence[3] = { OrMinusOne(refined.Screened[refined.Choice.Kept].CurvatureDifference),
+    static_cast<double>(refined.Choice.RunnerUp), OrMinusOne(refined.Choice.Margin) };
+  mobius::vtk::SetFieldValues(fieldData, "RefinementConfidence", confidence, 3);
+  AddMapStretch(source, output);
+  SetFieldValue(fieldData, "RefinementOrientationAgreement", refined.Kept.OrientationAgreement);
+  SetFieldInteger(fieldData, "RefinementOrientationRepaired", refined.WrongOrientation ? 1 : 0);
+  SetFieldValue(fieldData, "RefinementOrthogonalityResidual", refined.Dense.OrthogonalityResidual);
+  SetFieldInteger(
+    fieldData, "RefinementBasisSize", static_cast<int>(refined.Dense.FunctionalMap.cols()));
+  if (stageSeconds)
+  {
+    mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", stageSeconds, 4);
+  }
+  const double storedBases[2] = { stored[0] ? 1.0 : 0.0, stored[1] ? 1.0 : 0.0 };
+  mobius::vtk::SetFieldValues(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
+  SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -242,253 +410,51 @@ int vtkCorrespondenceRefinement::ComputeOutput(
                   << ") must not exceed BasisSize (" << this->BasisSize << ").");
     return 0;
   }
-  const char* names[2] = { "Source (port 0)", "Target (port 1)" };
   MapInput maps[2];
-  for (int k = 0; k < 2; ++k)
+  const auto basisStart = std::chrono::steady_clock::now();
+  const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
+  mobius::SpectralSurface surfaces[2];
+  bool stored[2] = { false, false };
+  std::string error = PrepareInputs(this, inputs, threads, maps, surfaces, stored);
+  if (!error.empty())
   {
-    const std::string error = ExtractMapInput(inputs[k], this->BasisSize, maps[k]);
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << error << ".");
-      return 0;
-    }
+    vtkErrorMacro(<< error);
+    return 0;
   }
-
+  const std::chrono::duration<double> basisTime = std::chrono::steady_clock::now() - basisStart;
+  this->UpdateProgress(0.5);
+  if (this->GetAbortExecute())
   {
-    using Clock = std::chrono::steady_clock;
-    auto lapStart = Clock::now();
-    auto lap = [&lapStart]() {
-      const auto now = Clock::now();
-      const double seconds = std::chrono::duration<double>(now - lapStart).count();
-      lapStart = now;
-      return seconds;
-    };
-    const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
-    // A basis stored on an input (vtkLaplaceBeltramiBasis) is used when it is this
-    // surface's, of BasisSize functions; one of another size is ignored, one of another
-    // surface refused.
-    mobius::SpectralSurface surfaces[2];
-    std::string errors[2];
-    bool prepared[2] = { false, false };
-    bool stored[2] = { false, false };
-    mobius::LaplaceBeltramiBasis bases[2];
-    for (int k = 0; k < 2; ++k)
-    {
-      const mobius::vtk::StoredBasis found = mobius::vtk::ReadBasisArrays(inputs[k],
-        this->BasisSize, mobius::vtk::SurfaceFingerprint(maps[k].Surface, maps[k].Triangles),
-        bases[k], errors[k]);
-      if (!errors[k].empty())
-      {
-        vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << errors[k] << ".");
-        return 0;
-      }
-      // A stored basis is built with the lumped mass; a blended mass needs its own basis.
-      stored[k] = found == mobius::vtk::StoredBasis::Found && this->ConsistentMassShare == 0.0;
-    }
-    // After the stored bases were matched: their fingerprints are of the surfaces as stored.
-    for (MapInput& map : maps)
-    {
-      mobius::vtk::CenterSurface(map.Surface);
-    }
-    // The two surfaces are independent (each eigensolve runs on one core): side by side
-    // when there are two threads.
-    mobius::ParallelFor(2, threads, [&](int k, int) {
-      if (!stored[k])
-      {
-        prepared[k] = mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles,
-          this->BasisSize, this->NumberOfSamples, surfaces[k], errors[k], this->ConsistentMassShare);
-      }
-      // The mass is cheap to rebuild, and rebuilt exactly as the eigensolver built it.
-      else if (mobius::BuildUnitAreaMassMatrix(
-                 maps[k].Surface, maps[k].Triangles, 0.0, bases[k].Mass, errors[k]))
-      {
-        mobius::PrepareSpectralSurface(maps[k].Surface, maps[k].Triangles, std::move(bases[k]),
-          this->NumberOfSamples, surfaces[k]);
-        prepared[k] = true;
-      }
-    });
-    for (int k = 0; k < 2; ++k)
-    {
-      if (!prepared[k])
-      {
-        vtkErrorMacro(<< "Cannot refine: the " << names[k] << ": " << errors[k] << ".");
-        return 0;
-      }
-    }
-    const double basisSeconds = lap();
-    this->UpdateProgress(0.5);
-    if (this->GetAbortExecute())
-    {
-      return 0;
-    }
-
-    mobius::SphericalPointLocator locator;
-    std::string error;
-    if (!locator.Build(maps[1].Sphere, maps[1].Triangles, error))
-    {
-      vtkErrorMacro(<< "Cannot refine: the " << names[1] << ": " << error << ".");
-      return 0;
-    }
-    mobius::ZoomOutParameters parameters;
-    parameters.StartSize = this->StartBasisSize;
-    parameters.Growth = this->BasisGrowth;
-    parameters.FinalSize = mobius::ClampToBasisSize(this->ScreeningBasisSize, this->BasisSize);
-    parameters.FullResolutionIterations = this->FullResolutionIterations;
-    parameters.NumberOfThreads = threads;
-
-    // Every candidate up to the screening size, each held on its side of the sphere; the
-    // one of the expected orientation that keeps the curvature best goes on
-    // (mobius::ChooseCandidate).
-    const std::vector<Matrix3> starts = CandidateStarts(inputs[0], this->SearchCandidates);
-    if (this->Candidate >= static_cast<int>(starts.size()))
-    {
-      vtkErrorMacro(<< "Candidate " << this->Candidate << " does not exist: the registration has "
-                    << starts.size() << " candidate" << (starts.size() == 1 ? "" : "s")
-                    << " (0.." << starts.size() - 1 << ").");
-      return 0;
-    }
-    vtkDataArray* determinantArray = inputs[0]->GetFieldData()->GetArray("Determinant");
-    const double bestDeterminant =
-      determinantArray && determinantArray->GetComponent(0, 0) < 0 ? -1.0 : 1.0;
-    const std::vector<mobius::Index>& samples = surfaces[0].Samples;
-    std::vector<bool> preserves;
-    std::vector<mobius::SampleAnchor> anchors;
-    for (const Matrix3& start : starts)
-    {
-      preserves.push_back(start.determinant() * bestDeterminant > 0);
-      anchors.push_back(SphereAnchor(start, maps[0].Sphere, samples, maps[1].Sphere,
-        surfaces[1].Samples, this->SphereAnchorWeight));
-    }
-    // The candidates are independent and each one's sample ZoomOut is too small (1000
-    // samples) to keep several threads busy: one candidate per thread.
-    std::vector<mobius::SampleMap> screened(starts.size());
-    mobius::ZoomOutParameters oneThread = parameters;
-    oneThread.NumberOfThreads = 1;
-    mobius::ParallelFor(static_cast<int>(starts.size()), threads, [&](int c, int) {
-        mobius::ZoomOutParameters own = oneThread;
-        own.Orientation = this->RepairOrientation ? (preserves[c] ? 1 : -1) : 0;
-        screened[c] = mobius::ZoomOutOnSamples(surfaces[0], surfaces[1],
-          StartingSampleMap(starts[c], maps[0].Sphere, samples, locator, maps[1].Triangles),
-          own, anchors[c]);
-      });
-    this->UpdateProgress(0.7);
-    if (this->GetAbortExecute())
-    {
-      return 0;
-    }
-    std::vector<bool> rightSide;
-    for (size_t c = 0; c < starts.size(); ++c)
-    {
-      rightSide.push_back(mobius::HasOrientation(screened[c], preserves[c]));
-    }
-    mobius::CandidateChoice choice = mobius::ChooseCandidate(screened, rightSide, surfaces[1],
-      this->CandidateCriterion == ORTHOGONALITY ? mobius::CandidateCriterion::Orthogonality
-                                                : mobius::CandidateCriterion::Curvature);
-    if (this->Candidate >= 0)
-    {
-      choice.Kept = this->Candidate;
-    }
-    else if (choice.RunnerUp >= 0 && choice.Margin < mobius::kNearEqualMargin)
-    {
-      vtkWarningMacro(<< "Candidates " << choice.Kept << " (kept) and " << choice.RunnerUp
-                      << " give different maps that keep the surfaces' curvature almost "
-                         "equally well (margin "
-                      << 100 * choice.Margin
-                      << "%): the map may be the wrong one of two, such as a body turned half a "
-                         "turn. Check it, and keep the other with Candidate = "
-                      << choice.RunnerUp << " (mobius-register --candidate " << choice.RunnerUp
-                      << ").");
-    }
-    const int bestCandidate = choice.Kept;
-    mobius::SampleMap best = screened[bestCandidate];
-    // A map that still has the wrong orientation (no candidate reached the right one) is
-    // retried from its low-frequency functional map with signs flipped.
-    const bool preserve = preserves[bestCandidate];
-    const bool reversed = !rightSide[bestCandidate];
-    if (reversed && this->RepairOrientation)
-    {
-      best = mobius::RepairOrientation(
-        surfaces[0], surfaces[1], best, preserve, 9, parameters, anchors[bestCandidate]);
-    }
-    if (parameters.FinalSize < this->BasisSize)
-    {
-      parameters.StartSize = mobius::NextBasisSize(parameters.FinalSize, parameters.Growth);
-      parameters.FinalSize = this->BasisSize;
-      parameters.Orientation = this->RepairOrientation ? (preserve ? 1 : -1) : 0;
-      best = mobius::ZoomOutOnSamples(
-        surfaces[0], surfaces[1], best.TargetVertex, parameters, anchors[bestCandidate]);
-    }
-    const double candidateSeconds = lap();
-    this->UpdateProgress(0.85);
-
-    const mobius::DenseMap dense =
-      mobius::ExtendToAllVertices(surfaces[0], surfaces[1], best, parameters);
-    const double extensionSeconds = lap();
-    mobius::vtk::SurfaceLocations locations;
-    locations.LocatedTriangles = &maps[1].Triangles;
-    locations.Triangle = dense.Triangle;
-    locations.Barycentric = dense.Barycentric;
-    double polishSeconds = 0.0;
-    if (this->GeometricPolish)
-    {
-      // On the scaled surfaces the spectral bases were computed on: the polish scales the
-      // source to the target's area itself, and the map is triangles and barycentrics.
-      mobius::SurfacePolishParameters polish;
-      polish.NumberOfThreads = threads;
-      // A mirror image (an orientation-reversing map: a reflection's, or a symmetry's) is
-      // polished as a rotation of the mirrored source.
-      polish.ReverseOrientation = best.OrientationAgreement < 0.5;
-      mobius::SurfacePolishInfo polishInfo;
-      if (!mobius::PolishSurfaceMap(surfaces[0].Positions, surfaces[0].Faces,
-            surfaces[1].Positions, surfaces[1].Faces, surfaces[1].Corners, locations.Triangle,
-            locations.Barycentric, polish, polishInfo))
-      {
-        vtkWarningMacro(<< "The geometric polish failed (" << polishInfo.Error
-                        << "); the spectral map is kept.");
-      }
-      polishSeconds = lap();
-    }
-    const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
-      inputs[0], inputs[1], locations, this->OutputGeometry == TARGET, output);
-    if (!arrayWarning.empty())
-    {
-      vtkWarningMacro(<< "Target: " << arrayWarning << ".");
-    }
-    mobius::vtk::RemoveBasisArrays(output);
-
-    vtkFieldData* fieldData = output->GetFieldData();
-    mobius::vtk::SetFieldInteger(fieldData, "RefinementCandidate", bestCandidate);
-    std::vector<double> residuals, coverage, orientation, curvature;
-    for (const mobius::SampleMap& map : screened)
-    {
-      residuals.push_back(map.OrthogonalityResidual);
-      coverage.push_back(map.TargetCoverage);
-      orientation.push_back(map.OrientationAgreement);
-      curvature.push_back(OrMinusOne(map.CurvatureDifference));
-    }
-    SetFieldVector(fieldData, "CandidateOrthogonalityResiduals", residuals);
-    SetFieldVector(fieldData, "CandidateTargetCoverage", coverage);
-    SetFieldVector(fieldData, "CandidateOrientationAgreement", orientation);
-    SetFieldVector(fieldData, "CandidateCurvatureDifferences", curvature);
-    const double confidence[3] = { OrMinusOne(screened[bestCandidate].CurvatureDifference),
-      static_cast<double>(choice.RunnerUp), OrMinusOne(choice.Margin) };
-    mobius::vtk::SetFieldValues(fieldData, "RefinementConfidence", confidence, 3);
-    AddMapStretch(maps[0], output);
-    mobius::vtk::SetFieldValue(fieldData, "RefinementOrientationAgreement", best.OrientationAgreement);
-    mobius::vtk::SetFieldInteger(fieldData, "RefinementOrientationRepaired", reversed ? 1 : 0);
-    mobius::vtk::SetFieldValue(
-      fieldData, "RefinementOrthogonalityResidual", dense.OrthogonalityResidual);
-    mobius::vtk::SetFieldInteger(
-      fieldData, "RefinementBasisSize", static_cast<int>(dense.FunctionalMap.cols()));
-    if (this->RecordTimings)
-    {
-      const double seconds[4] = { basisSeconds, candidateSeconds, extensionSeconds, polishSeconds };
-      mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", seconds, 4);
-    }
-    const double storedBases[2] = { stored[0] ? 1.0 : 0.0, stored[1] ? 1.0 : 0.0 };
-    mobius::vtk::SetFieldValues(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
-    mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
+    return 0;
   }
+  mobius::SphericalPointLocator locator;
+  if (!locator.Build(maps[1].Sphere, maps[1].Triangles, error))
+  {
+    vtkErrorMacro(<< InputError(1, error));
+    return 0;
+  }
+  const std::vector<mobius::RotationMatrix> starts =
+    CandidateStarts(inputs[0], this->SearchCandidates);
+  error = CheckCandidate(this->Candidate, starts.size());
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  const mobius::RefinedCorrespondence refined = mobius::RefineCorrespondence(surfaces[0],
+    surfaces[1],
+    { maps[0].Sphere, maps[1].Sphere, maps[1].Triangles, locator, starts, BestReflects(inputs[0]) },
+    RefinementOptions(this, threads));
+  if (refined.Stopped)
+  {
+    return 0;
+  }
+  WarnAboutRefinement(this, refined);
+  AssembleOutput(this, inputs, maps, refined, output);
+  const double stageSeconds[4] = { basisTime.count(), refined.CandidateSeconds,
+    refined.ExtensionSeconds, refined.PolishSeconds };
+  AddRefinementFieldData(
+    refined, maps[0], this->RecordTimings ? stageSeconds : nullptr, stored, threads, output);
   this->UpdateProgress(1.0);
   return 1;
 }

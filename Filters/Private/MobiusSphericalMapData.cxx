@@ -278,6 +278,14 @@ int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
   return 0;
 }
 
+std::function<bool(double)> ProgressAndAbort(vtkAlgorithm* filter)
+{
+  return [filter](double fraction) {
+    filter->UpdateProgress(fraction);
+    return !filter->GetAbortExecute();
+  };
+}
+
 void SetPoints(vtkPolyData* output, const Points& points)
 {
   vtkNew<vtkPoints> vtkpoints;
@@ -288,6 +296,17 @@ void SetPoints(vtkPolyData* output, const Points& points)
     vtkpoints->SetPoint(i, points(i, 0), points(i, 1), points(i, 2));
   }
   output->SetPoints(vtkpoints);
+}
+
+void SetTriangles(vtkPolyData* output, const Triangles& triangles)
+{
+  vtkNew<vtkCellArray> polys;
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const vtkIdType ids[3] = { triangles(t, 0), triangles(t, 1), triangles(t, 2) };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPolys(polys);
 }
 
 void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count)

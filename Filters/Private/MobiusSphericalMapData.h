@@ -15,6 +15,7 @@
 #include "MeshTypes.h"
 #include "vtkType.h" // For vtkIdType
 
+#include <functional>
 #include <string>
 
 class vtkAlgorithm;
@@ -72,8 +73,15 @@ std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints);
 int ReportException(vtkAlgorithm* filter, vtkInformationVector* outputVector,
   const std::string& subject = {});
 
+/// A core progress callback for `filter`: reports the fraction done as the filter's progress
+/// and returns false once the filter is asked to abort.
+std::function<bool(double)> ProgressAndAbort(vtkAlgorithm* filter);
+
 /// Replaces the output's points by `points` (double precision).
 void SetPoints(vtkPolyData* output, const Points& points);
+
+/// Replaces the output's polygons by `triangles`.
+void SetTriangles(vtkPolyData* output, const Triangles& triangles);
 
 /// Per-triangle distortion of the map from the surface (point array `SurfacePoints`) to
 /// the output's points, as cell arrays to color the map by: `QuasiConformalDistortion`

@@ -4,8 +4,10 @@
 #include "ConformalMap.h"
 #include "CotangentLaplacian.h"
 #include "CoreTest.h"
+#include "FlowInput.h"
 #include "Icosphere.h"
 #include "LinearSphericalMap.h"
+#include "MapDistortion.h"
 #include "MobiusCentering.h"
 #include "SparseCholesky.h"
 #include "Torus.h"
@@ -378,6 +380,35 @@ void TestHooksAndAbort()
 }
 }
 
+// The flow's input preparation: an exact power-of-two rescaling, outward-facing triangles,
+// and areas that double precision cannot hold refused with the triangle named.
+void TestFlowInput()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(1, p, t);
+  Points huge = p * 1e100;
+  const int exponent = ScaleToUnitOrder(huge);
+  MOBIUS_CHECK(huge.cwiseAbs().maxCoeff() >= 1.0 && huge.cwiseAbs().maxCoeff() < 2.0);
+  MOBIUS_CHECK(((huge * std::ldexp(1.0, exponent)).array() == (p * 1e100).array()).all());
+  Vector areas;
+  std::string problem;
+  MOBIUS_CHECK(TriangleAreasAtScale(huge, t, exponent, areas, problem) && problem.empty());
+  Vector unitAreas;
+  MOBIUS_CHECK(TriangleAreasAtScale(p, t, 0, unitAreas, problem));
+  MOBIUS_CHECK_NEAR(areas.sum() / (unitAreas.sum() * 1e200), 1.0, 1e-12);
+  // At 2^600 the areas overflow double precision: refused, naming triangle 0.
+  MOBIUS_CHECK(!TriangleAreasAtScale(huge, t, exponent + 600, areas, problem));
+  MOBIUS_CHECK(problem.find("triangle 0:") != std::string::npos);
+
+  Triangles inward = t;
+  inward.col(1).swap(inward.col(2));
+  MOBIUS_CHECK(FaceOutward(p, inward));
+  MOBIUS_CHECK(inward == t);
+  MOBIUS_CHECK(!FaceOutward(p, inward));
+  MOBIUS_CHECK(EnclosedVolume(p, inward) > 0);
+}
+
 int main()
 {
   TestSphereMapsToItself();
@@ -386,5 +417,6 @@ int main()
   TestLinearStart();
   TestInvalidInputs();
   TestHooksAndAbort();
+  TestFlowInput();
   return MOBIUS_TEST_RESULT();
 }

@@ -2,6 +2,7 @@
 #include "CoreTest.h"
 #include "Icosphere.h"
 #include "MeshTopology.h"
+#include "RepairMesh.h"
 #include "Torus.h"
 
 #include <algorithm>
@@ -355,6 +356,97 @@ void TestHubVertex()
   MOBIUS_CHECK(r.DuplicateTriangles == one.rows() && r.NonManifoldEdges == 3 * sides);
 }
 
+// The whole repair chain on an icosphere with two holes, a second component and an unused
+// point: with both options it comes out a topological sphere whose provenance names the
+// input rows; without them the problem names the options. Then a triangle soup with half
+// its triangles reversed: merged and oriented.
+void TestRepairMesh()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(1, p, t);
+  const Index spherePoints = p.rows();
+  // Two one-triangle holes that share no point: triangle 0 and the first one apart from it.
+  Index apart = 1;
+  while ((t.row(apart).array() == t(0, 0) || t.row(apart).array() == t(0, 1) ||
+           t.row(apart).array() == t(0, 2)).any())
+  {
+    ++apart;
+  }
+  const Triangles damaged = WithoutRows(t, { 0, apart });
+  Points extended(spherePoints + 4, 3);
+  extended.topRows(spherePoints) = p;
+  extended.row(spherePoints) << 5, 5, 5;     // unused
+  extended.row(spherePoints + 1) << 6, 5, 5; // a lone triangle: a second component
+  extended.row(spherePoints + 2) << 5, 6, 5;
+  extended.row(spherePoints + 3) << 5, 5, 6;
+  Triangles withComponent(damaged.rows() + 1, 3);
+  withComponent.topRows(damaged.rows()) = damaged;
+  withComponent.row(damaged.rows()) << spherePoints + 1, spherePoints + 2, spherePoints + 3;
+
+  const RepairedMesh refused = RepairMesh(extended, withComponent, { false, false });
+  MOBIUS_CHECK(refused.Problem.find("Set FillHoles") != std::string::npos);
+  MOBIUS_CHECK(refused.Problem.find("Set KeepLargestComponent") != std::string::npos);
+
+  const RepairedMesh mesh = RepairMesh(extended, withComponent, { true, true });
+  MOBIUS_CHECK(mesh.Problem.empty());
+  MOBIUS_CHECK(mesh.Topology.IsTopologicalSphere());
+  MOBIUS_CHECK(mesh.FilledHoles == 2);
+  MOBIUS_CHECK(mesh.MergedDuplicatePoints == 0);
+  MOBIUS_CHECK(mesh.Points.rows() == spherePoints);
+  MOBIUS_CHECK(mesh.Triangles.rows() == t.rows());
+  MOBIUS_CHECK(static_cast<Index>(mesh.Provenance.PointSource.size()) == mesh.Points.rows());
+  for (Index i = 0; i < mesh.Points.rows(); ++i)
+  {
+    const Index source = mesh.Provenance.PointSource[i];
+    MOBIUS_CHECK(source >= 0 && source < spherePoints);
+    MOBIUS_CHECK(mesh.Points.row(i) == extended.row(source));
+  }
+  // A kept triangle names the points of its input row (in either orientation); the fills
+  // are new.
+  Index created = 0;
+  for (Index f = 0; f < mesh.Triangles.rows(); ++f)
+  {
+    const Index source = mesh.Provenance.TriangleSource[f];
+    if (source < 0)
+    {
+      ++created;
+      continue;
+    }
+    std::vector<Index> repaired, original;
+    for (int k = 0; k < 3; ++k)
+    {
+      repaired.push_back(mesh.Provenance.PointSource[mesh.Triangles(f, k)]);
+      original.push_back(withComponent(source, k));
+    }
+    std::sort(repaired.begin(), repaired.end());
+    std::sort(original.begin(), original.end());
+    MOBIUS_CHECK(repaired == original);
+  }
+  MOBIUS_CHECK(created == 2);
+
+  Points soup(3 * t.rows(), 3);
+  Triangles soupTriangles(t.rows(), 3);
+  for (Index f = 0; f < t.rows(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      soup.row(3 * f + k) = p.row(t(f, k));
+      soupTriangles(f, k) = 3 * f + k;
+    }
+    if (f % 2 == 1)
+    {
+      std::swap(soupTriangles(f, 1), soupTriangles(f, 2));
+    }
+  }
+  const RepairedMesh merged = RepairMesh(soup, soupTriangles, { false, false });
+  MOBIUS_CHECK(merged.Problem.empty());
+  MOBIUS_CHECK(merged.MergedDuplicatePoints == soup.rows() - spherePoints);
+  MOBIUS_CHECK(merged.Points.rows() == spherePoints);
+  MOBIUS_CHECK(merged.Topology.IsTopologicalSphere());
+  MOBIUS_CHECK(merged.Topology.InconsistentlyOrientedEdges == 0);
+}
+
 int main()
 {
   TestSphereAndTorus();
@@ -365,5 +457,6 @@ int main()
   TestBadValues();
   TestDuplicateTriangles();
   TestHubVertex();
+  TestRepairMesh();
   return MOBIUS_TEST_RESULT();
 }

@@ -39,6 +39,8 @@ struct MapVerdict
   bool Degenerate() const { return !this->Problems.empty(); }
   /// The problems joined by "; ".
   std::string Reason() const;
+  /// The warning of a usable map; empty for a degenerate one, whose problems say enough.
+  std::string UsableWarning() const { return this->Degenerate() ? std::string() : this->Warning; }
 };
 
 /// Judges `result` (a successful map); `convergenceTolerance` is the flow's, for the message.

@@ -1,0 +1,53 @@
+#include "FlowInput.h"
+
+#include "MapDistortion.h"
+
+#include <Eigen/Geometry>
+
+#include <cfloat>
+#include <cmath>
+#include <sstream>
+
+namespace mobius
+{
+int ScaleToUnitOrder(Points& points)
+{
+  const double largestCoordinate = points.size() > 0 ? points.cwiseAbs().maxCoeff() : 0.0;
+  const int scaleExponent = largestCoordinate > 0.0 ? std::ilogb(largestCoordinate) : 0;
+  points *= std::ldexp(1.0, -scaleExponent);
+  return scaleExponent;
+}
+
+bool FaceOutward(const Points& points, Triangles& triangles)
+{
+  const bool reversed = EnclosedVolume(points, triangles) < 0;
+  if (reversed)
+  {
+    triangles.col(1).swap(triangles.col(2));
+  }
+  return reversed;
+}
+
+bool TriangleAreasAtScale(const Points& points, const Triangles& triangles, int scaleExponent,
+  Vector& areas, std::string& problem)
+{
+  areas.resize(triangles.rows());
+  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
+  {
+    const Eigen::Vector3d a = points.row(triangles(t, 0)), b = points.row(triangles(t, 1)),
+                          c = points.row(triangles(t, 2));
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    areas[t] = std::ldexp(area, 2 * scaleExponent);
+    if (!std::isfinite(areas[t]) || !(areas[t] >= DBL_MIN))
+    {
+      std::ostringstream message;
+      message << "its triangles' areas (triangle " << t << ": 2^"
+              << std::ilogb(area) + 2 * scaleExponent
+              << ") are beyond what double precision represents; rescale the mesh";
+      problem = message.str();
+      return false;
+    }
+  }
+  return true;
+}
+}

@@ -1,0 +1,199 @@
+#include "RefineCorrespondence.h"
+
+#include "ParallelFor.h"
+#include "SurfacePolish.h"
+
+#include <Eigen/LU>
+
+#include <chrono>
+
+namespace mobius
+{
+namespace
+{
+// The Möbius map of the source samples under one candidate: each sample rotated by `start`
+// and located on the target sphere, sent to the nearest corner of its triangle.
+std::vector<Index> StartingSampleMap(const RotationMatrix& start,
+  const std::vector<Index>& samples, const RegisteredSpheres& spheres)
+{
+  std::vector<Index> targetVertex(samples.size());
+  for (size_t s = 0; s < samples.size(); ++s)
+  {
+    const Eigen::Vector3d p = start * spheres.Source.row(samples[s]).transpose();
+    const SphericalLocation location = spheres.TargetLocator.Locate(p);
+    Eigen::Index corner = 0;
+    location.Barycentric.maxCoeff(&corner);
+    targetVertex[s] = spheres.TargetTriangles(location.Triangle, corner);
+  }
+  return targetVertex;
+}
+
+// The sphere points of both surfaces' samples, the source's turned by `start`: what keeps a
+// candidate's ZoomOut on the side its rotation put it (SampleAnchor).
+SampleAnchor SphereAnchor(const RotationMatrix& start, const std::vector<Index>& sourceSamples,
+  const std::vector<Index>& targetSamples, const RegisteredSpheres& spheres, double weight)
+{
+  SampleAnchor anchor;
+  anchor.Weight = weight;
+  anchor.Source.resize(static_cast<Eigen::Index>(sourceSamples.size()), 3);
+  for (size_t s = 0; s < sourceSamples.size(); ++s)
+  {
+    anchor.Source.row(static_cast<Eigen::Index>(s)) =
+      (start * spheres.Source.row(sourceSamples[s]).transpose()).transpose();
+  }
+  anchor.Target.resize(static_cast<Eigen::Index>(targetSamples.size()), 3);
+  for (size_t t = 0; t < targetSamples.size(); ++t)
+  {
+    anchor.Target.row(static_cast<Eigen::Index>(t)) = spheres.Target.row(targetSamples[t]);
+  }
+  return anchor;
+}
+
+// The orientation ZoomOut should hold a map to: +1 preserved, -1 reversed, 0 either.
+int ExpectedOrientation(const CorrespondenceRefinementOptions& options, bool preserve)
+{
+  return options.RepairOrientation ? (preserve ? 1 : -1) : 0;
+}
+
+class Stopwatch
+{
+public:
+  /// Seconds since the last lap (or the construction).
+  double Lap()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - this->Start).count();
+    this->Start = now;
+    return seconds;
+  }
+
+private:
+  std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+};
+// Per candidate, the orientation its map should have and the anchor that holds it on its
+// side of the sphere.
+struct Candidates
+{
+  std::vector<bool> Preserve;
+  std::vector<SampleAnchor> Anchors;
+};
+
+Candidates SetUpCandidates(const SpectralSurface& source, const SpectralSurface& target,
+  const RegisteredSpheres& spheres, const CorrespondenceRefinementOptions& options)
+{
+  Candidates candidates;
+  const double bestDeterminant = spheres.BestReflects ? -1.0 : 1.0;
+  for (const RotationMatrix& start : spheres.Starts)
+  {
+    candidates.Preserve.push_back(start.determinant() * bestDeterminant > 0);
+    candidates.Anchors.push_back(
+      SphereAnchor(start, source.Samples, target.Samples, spheres, options.SphereAnchorWeight));
+  }
+  return candidates;
+}
+
+// Every candidate's map up to the screening size, each held on its side of the sphere. The
+// candidates are independent and each one's sample ZoomOut is too small (1000 samples) to
+// keep several threads busy: one candidate per thread.
+std::vector<SampleMap> ScreenCandidates(const SpectralSurface& source,
+  const SpectralSurface& target, const RegisteredSpheres& spheres,
+  const Candidates& candidates, const CorrespondenceRefinementOptions& options)
+{
+  std::vector<SampleMap> screened(spheres.Starts.size());
+  ZoomOutParameters oneThread = options.ZoomOut;
+  oneThread.NumberOfThreads = 1;
+  ParallelFor(static_cast<int>(screened.size()), options.ZoomOut.NumberOfThreads, [&](int c, int) {
+    ZoomOutParameters own = oneThread;
+    own.Orientation = ExpectedOrientation(options, candidates.Preserve[c]);
+    screened[c] = ZoomOutOnSamples(source, target,
+      StartingSampleMap(spheres.Starts[c], source.Samples, spheres), own, candidates.Anchors[c]);
+  });
+  return screened;
+}
+
+// The kept candidate's map, its orientation repaired if it is wrong, grown to the full
+// basis; `parameters` ends as the growth's, which the extension goes on with.
+SampleMap FinishKeptMap(const SpectralSurface& source, const SpectralSurface& target,
+  const RefinedCorrespondence& refined, bool preserve, const SampleAnchor& anchor,
+  const CorrespondenceRefinementOptions& options, ZoomOutParameters& parameters)
+{
+  SampleMap kept = refined.Screened[refined.Choice.Kept];
+  // A map that still has the wrong orientation (no candidate reached the right one) is
+  // retried from its low-frequency functional map with signs flipped.
+  if (refined.WrongOrientation && options.RepairOrientation)
+  {
+    kept = RepairOrientation(source, target, kept, preserve, 9, parameters, anchor);
+  }
+  if (parameters.FinalSize < options.BasisSize)
+  {
+    parameters.StartSize = NextBasisSize(parameters.FinalSize, parameters.Growth);
+    parameters.FinalSize = options.BasisSize;
+    parameters.Orientation = ExpectedOrientation(options, preserve);
+    kept = ZoomOutOnSamples(source, target, kept.TargetVertex, parameters, anchor);
+  }
+  return kept;
+}
+
+// The dense map moved on the surfaces (SurfacePolish); the error if the polish failed.
+std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& kept, int numberOfThreads, DenseMap& dense)
+{
+  // On the scaled surfaces the spectral bases were computed on: the polish scales the
+  // source to the target's area itself, and the map is triangles and barycentrics.
+  SurfacePolishParameters polish;
+  polish.NumberOfThreads = numberOfThreads;
+  // A mirror image (an orientation-reversing map: a reflection's, or a symmetry's) is
+  // polished as a rotation of the mirrored source.
+  polish.ReverseOrientation = kept.OrientationAgreement < 0.5;
+  SurfacePolishInfo info;
+  const bool polished = PolishSurfaceMap(source.Positions, source.Faces, target.Positions,
+    target.Faces, target.Corners, dense.Triangle, dense.Barycentric, polish, info);
+  return polished ? std::string() : info.Error;
+}
+}
+
+RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
+  const SpectralSurface& target, const RegisteredSpheres& spheres,
+  const CorrespondenceRefinementOptions& options)
+{
+  Stopwatch stopwatch;
+  RefinedCorrespondence refined;
+  const Candidates candidates = SetUpCandidates(source, target, spheres, options);
+  refined.Screened = ScreenCandidates(source, target, spheres, candidates, options);
+  if (options.Progress && !options.Progress(0.7))
+  {
+    refined.Stopped = true;
+    return refined;
+  }
+  // The one of the expected orientation that keeps the curvature best goes on.
+  std::vector<bool> rightSide;
+  for (size_t c = 0; c < refined.Screened.size(); ++c)
+  {
+    rightSide.push_back(HasOrientation(refined.Screened[c], candidates.Preserve[c]));
+  }
+  refined.Choice = ChooseCandidate(refined.Screened, rightSide, target, options.Criterion);
+  if (options.Candidate >= 0)
+  {
+    refined.Choice.Kept = options.Candidate;
+  }
+  const int kept = refined.Choice.Kept;
+  refined.WrongOrientation = !rightSide[kept];
+  ZoomOutParameters parameters = options.ZoomOut;
+  refined.Kept = FinishKeptMap(source, target, refined, candidates.Preserve[kept],
+    candidates.Anchors[kept], options, parameters);
+  refined.CandidateSeconds = stopwatch.Lap();
+  if (options.Progress)
+  {
+    options.Progress(0.85); // the extension is not stopped
+  }
+  refined.Dense = ExtendToAllVertices(source, target, refined.Kept, parameters);
+  refined.ExtensionSeconds = stopwatch.Lap();
+  if (options.GeometricPolish)
+  {
+    refined.PolishError = PolishDenseMap(
+      source, target, refined.Kept, options.ZoomOut.NumberOfThreads, refined.Dense);
+    refined.PolishSeconds = stopwatch.Lap();
+  }
+  return refined;
+}
+}

@@ -1,0 +1,81 @@
+// The refinement of the Möbius registration's correspondence, from the two surfaces'
+// spectral data to a point on the target for every source vertex: every candidate rotation
+// of the registration screened by ZoomOut on the samples, each held on its side of the
+// sphere; the one to keep chosen (CandidateChoice); its orientation repaired when no
+// candidate reached the expected one; its basis grown to the full size; the map extended to
+// every vertex and, on request, polished on the surfaces (SurfacePolish).
+#ifndef mobius_RefineCorrespondence_h
+#define mobius_RefineCorrespondence_h
+
+#include "CandidateChoice.h"
+#include "SphericalPointLocator.h"
+#include "ZoomOut.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mobius
+{
+using RotationMatrix = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+/// The registered spherical maps the candidates start from.
+struct RegisteredSpheres
+{
+  const Points& Source; ///< the source's sphere points, turned by the registration's best transform
+  const Points& Target; ///< the target's sphere points
+  const Triangles& TargetTriangles;
+  const SphericalPointLocator& TargetLocator; ///< built on Target and TargetTriangles
+  /// The rotations of the aligned source that reach each candidate, the best one (identity)
+  /// first.
+  const std::vector<RotationMatrix>& Starts;
+  /// The best transform reverses orientation (a reflection): its candidates' maps should too.
+  bool BestReflects;
+};
+
+/// No defaults here: RegistrationParameters holds them.
+struct CorrespondenceRefinementOptions
+{
+  /// StartSize, Growth, FullResolutionIterations, NumberOfThreads; FinalSize is the
+  /// screening size, at most BasisSize.
+  ZoomOutParameters ZoomOut;
+  int BasisSize;
+  bool RepairOrientation;
+  double SphereAnchorWeight;
+  CandidateCriterion Criterion;
+  /// The candidate to keep; -1: chosen by Criterion.
+  int Candidate;
+  bool GeometricPolish;
+  /// Called with the share of the refinement done (0.7 after the screening, 0.85 before the
+  /// extension); false after the screening stops the refinement.
+  std::function<bool(double)> Progress;
+};
+
+struct RefinedCorrespondence
+{
+  /// Per candidate, its map after the screening.
+  std::vector<SampleMap> Screened;
+  /// The candidate kept (the requested one, if any), its runner-up and margin.
+  CandidateChoice Choice;
+  /// The kept candidate's map after the orientation repair and the basis growth.
+  SampleMap Kept;
+  /// The kept candidate's screened map had the wrong orientation (repaired with
+  /// RepairOrientation).
+  bool WrongOrientation = false;
+  /// Per source vertex, its point on the target (polished with GeometricPolish).
+  DenseMap Dense;
+  /// Why the polish failed (the spectral map is kept); empty if it did not.
+  std::string PolishError;
+  double CandidateSeconds = 0, ExtensionSeconds = 0, PolishSeconds = 0;
+  /// Progress asked to stop: nothing after the screening is filled.
+  bool Stopped = false;
+};
+
+/// Refines the correspondence between `source` and `target` (prepared with
+/// PrepareSpectralSurface on the surfaces of the registered spheres).
+RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
+  const SpectralSurface& target, const RegisteredSpheres& spheres,
+  const CorrespondenceRefinementOptions& options);
+}
+
+#endif
