@@ -17,9 +17,10 @@ import warnings
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
+from .messages import FilterMessages
 from .vtkMobiusRegistrationFilters import (
     vtkCorrespondenceRefinement, vtkMobiusRegistration, vtkSO3Register, vtkSphericalConformalMap,
     vtkSurfaceMeshReader)
@@ -63,28 +64,8 @@ class RegistrationError(RuntimeError):
     """A mesh could not be read or mapped; the message is the filter's."""
 
 
-class _Errors:
-    """Collects the error messages of the filters it watches (and keeps VTK from printing them)."""
-
-    def __init__(self):
-        self.messages = []
-        self.warnings = []
-
-    def watch(self, algorithm):
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self._record)
-        algorithm.AddObserver(vtkCommand.WarningEvent, self._record_warning)
-        # The executive's "Algorithm ... returned failure" only repeats the filter's message.
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda obj, event: None)
-        return algorithm
-
-    def _record(self, obj, event, message=None):
-        text = str(message).split("): ", 1)[-1].strip() if message else "error"
-        self.messages.append(f"{obj.GetClassName()}: {text}")
-    _record.CallDataType = "string0"
-
-    def _record_warning(self, obj, event, message=None):
-        self.warnings.append(str(message).split("): ", 1)[-1].strip() if message else "warning")
-    _record_warning.CallDataType = "string0"
+class _Errors(FilterMessages):
+    """The filters' messages, in register()'s words."""
 
     # The filters' hints name their properties; here, register()'s options.
     _HINTS = (("set TransformMode to REFLECTIONS", 'pass transform="reflection"'),
@@ -319,8 +300,7 @@ def register(source, target, **options):
     errors.warn()
     if errors.messages:
         # One message, the pipeline's, naming the mesh; its hint in this function's words.
-        message = errors.messages[0].split(": ", 1)[-1]
-        raise RegistrationError(message.replace("set AllowPoorMaps to write the result anyway",
+        raise RegistrationError(errors.messages[0].replace("set AllowPoorMaps to write the result anyway",
                                                 "allow_poor_maps=True accepts it"))
 
     output = vtkPolyData()

@@ -46,8 +46,7 @@ for _ in range(5):
     if os.path.isdir(os.path.join(candidate, "mobiusregistration")):
         sys.path.insert(0, candidate)
         break
-from mobiusregistration import vtkMobiusRegistration, vtkSurfaceMeshReader  # noqa: E402
-from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
+from mobiusregistration import FilterMessages, vtkMobiusRegistration, vtkSurfaceMeshReader  # noqa: E402
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter  # noqa: E402
 
 comm = MPI.COMM_WORLD
@@ -91,29 +90,11 @@ def share_of_cores():
 threads = args.threads or share_of_cores()
 
 
-class Errors:
-    """Collects the error messages of the filters it watches."""
-
-    def __init__(self):
-        self.messages = []
-
-    def watch(self, algorithm):
-        # Observing the errors keeps VTK from printing them; the executive's "returned
-        # failure" only repeats them.
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self._record)
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda obj, event: None)
-        return algorithm
-
-    def _record(self, obj, event, message=None):
-        self.messages.append(str(message).split("): ", 1)[-1].strip() if message else "error")
-    _record.CallDataType = "string0"
-
-
 os.makedirs(args.output, exist_ok=True)
 rows = []
 for path in args.meshes[rank::size]:
     name = os.path.splitext(os.path.basename(path))[0]
-    errors = Errors()
+    errors = FilterMessages()
     registration = registration_for(path, errors.watch)
     registration.SetNumberOfThreads(threads)
     writer = vtkXMLPolyDataWriter()

@@ -114,8 +114,14 @@ def share_of_cores():
 
 
 from mobiusregistration import (  # noqa: E402
-    vtkLaplaceBeltramiBasis, vtkMobiusCenter, vtkMobiusRegistration, vtkSphericalConformalMap,
-    vtkSphericalScaleGrid, vtkSurfaceMeshReader)
+    FilterMessages, vtkLaplaceBeltramiBasis, vtkMobiusCenter, vtkMobiusRegistration,
+    vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
+from vtkmodules.util import numpy_support  # noqa: E402
+from vtkmodules.vtkCommonCore import (  # noqa: E402
+    vtkDoubleArray, vtkLookupTable, vtkStringArray, vtkUnsignedCharArray)
+from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter  # noqa: E402
 
 # --resolution and --threads: the rules mobius-register checks, in its words.
 rules = vtkMobiusRegistration()
@@ -126,12 +132,6 @@ if rules.CheckParameters(vtkMobiusRegistration.COMMAND_LINE_NAMES):
 
 threads = args.threads if args.threads > 0 else share_of_cores()
 threads_per_rank = comm.allgather(threads) if comm else [threads]
-from vtkmodules.util import numpy_support  # noqa: E402
-from vtkmodules.vtkCommonCore import (  # noqa: E402
-    vtkCommand, vtkDoubleArray, vtkLookupTable, vtkStringArray, vtkUnsignedCharArray)
-from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: E402
-from vtkmodules.vtkIOImage import vtkPNGWriter  # noqa: E402
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter  # noqa: E402
 
 # What a cached result depends on besides the mesh (bump the version when the computation
 # changes so that old caches are not reused).
@@ -143,23 +143,6 @@ SHAPE_PARAMETERS = {"version": 2, "descriptor_resolution": 64,
                     if args.refine == "spectral" else None}
 PAIR_PARAMETERS = {"version": 1, "resolution": args.resolution, "refine": args.refine}
 DESCRIPTOR_DEGREES = 16
-
-
-class Errors:
-    """Collects the error messages of the filters it watches (instead of VTK printing them)."""
-
-    def __init__(self):
-        self.messages = []
-
-    def watch(self, algorithm):
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self._record)
-        # The executive's "returned failure" only repeats the filter's error.
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda obj, event: None)
-        return algorithm
-
-    def _record(self, obj, event, message=None):
-        self.messages.append(str(message).split("): ", 1)[-1].strip() if message else "error")
-    _record.CallDataType = "string0"
 
 
 def digest(*parts):
@@ -294,7 +277,7 @@ def map_shape(i):
             record["cached"] = True
             return record
     begin = time.perf_counter()
-    errors = Errors()
+    errors = FilterMessages()
     reader = errors.watch(vtkSurfaceMeshReader())
     reader.SetFileName(meshes[i])
     conformal = errors.watch(vtkSphericalConformalMap())
@@ -410,7 +393,7 @@ def register_pair(p):
         record["cached"] = True
         return record
     begin = time.perf_counter()
-    errors = Errors()
+    errors = FilterMessages()
     source_map = read_polydata(shape_files(source)[1])
     target_map = read_polydata(shape_files(target)[1])
     if args.refine == "spectral":
