@@ -169,18 +169,24 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   const StageProgress& progress)
 {
   const auto started = std::chrono::steady_clock::now();
-  // The target's job reads a copy of its own: the two meshes may share arrays (one mesh given
-  // as both inputs, or a vtkTransformFilter's output, which shares its input's cells), and
-  // VTK reads and builds some state inside an array or a mesh (a cell array's traversal
-  // cursor, a mesh's cell structures), which two threads must not do at once.
-  vtkNew<vtkPolyData> targetCopy;
-  targetCopy->DeepCopy(target);
+  const int threads = mobius::ResolveThreadCount(options.NumberOfThreads);
+  // When the two meshes are mapped side by side, the target's job reads a copy of its own:
+  // the meshes may share arrays (one mesh given as both inputs, or a vtkTransformFilter's
+  // output, which shares its input's cells), and VTK reads and builds some state inside an
+  // array or a mesh (a cell array's traversal cursor, a mesh's cell structures), which two
+  // threads must not do at once.
+  const bool sideBySide = threads > 1 && !options.InputsAreCenteredMaps;
+  vtkSmartPointer<vtkPolyData> targetCopy = target;
+  if (sideBySide)
+  {
+    targetCopy = vtkSmartPointer<vtkPolyData>::New();
+    targetCopy->DeepCopy(target);
+  }
   vtkPolyData* inputs[2] = { source, targetCopy };
   const std::string names[2] = { sourceName, targetName };
   vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
   vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
   const char* which[2] = { "source", "target" };
-  const int threads = mobius::ResolveThreadCount(options.NumberOfThreads);
   // The two meshes' conformal maps and centerings are independent, and the conformal flow
   // runs on one core: with two threads or more the target's runs beside the source's (on
   // the man, 17,495 vertices: 0.5 s of a ~3 s job). Each job times and reports into its own
@@ -205,8 +211,8 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   bool ok[2] = { false, false };
   // In turn (one thread) the target is not mapped after the source failed. ParallelFor
   // carries an exception of either job here once both are done.
-  mobius::ParallelFor(2, threads, [&](int k, int) {
-    if (k == 0 || threads > 1 || ok[0])
+  mobius::ParallelFor(2, sideBySide ? threads : 1, [&](int k, int) {
+    if (k == 0 || sideBySide || ok[0])
     {
       ok[k] = mapAndCenter(k);
     }

@@ -225,10 +225,39 @@ def _require_int(name, value):
 
 
 def _require_real(name, value):
-    """A real option: a Python or NumPy integer or float (not a bool, not complex)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
-            or (isinstance(value, int) and abs(value) > 2 ** 1000):  # float() would overflow
+    """A real option: a Python or NumPy integer or float (not a bool, not complex) that
+    float() takes (an integer beyond a double's range overflows)."""
+    try:
+        real = not isinstance(value, bool) and isinstance(value, (int, float, np.integer, np.floating)) \
+            and float(value) is not None
+    except OverflowError:
+        real = False
+    if not real:
         raise ValueError(f"{name} must be a number, got {value!r}")
+
+
+def _registration_filter(options, errors):
+    """vtkMobiusRegistration with register()'s options, checked by the rules every interface
+    shares (ValueError in register()'s words)."""
+    registration = errors.watch(vtkMobiusRegistration())
+    registration.SetMaximumNumberOfIterations(int(options["iterations"]))
+    registration.SetConvergenceTolerance(float(options["tolerance"]))
+    registration.SetFillHoles(bool(options["fill_holes"]))
+    registration.SetKeepLargestComponent(bool(options["keep_largest_component"]))
+    registration.SetAllowPoorMaps(bool(options["allow_poor_maps"]))
+    registration.SetResolution(int(options["resolution"]))
+    registration.SetSmoothingTime(float(options["smoothing"]))
+    registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
+    registration.SetNumberOfCandidates(int(options["candidates"]))
+    registration.SetRefine(bool(options["refine"]))
+    registration.SetBasisSize(int(options["basis_size"]))
+    registration.SetGeometricPolish(bool(options["polish"]))
+    registration.SetCandidate(-1 if options["candidate"] is None else int(options["candidate"]))
+    registration.SetNumberOfThreads(int(options["threads"]))
+    out_of_range = registration.CheckParameters(vtkMobiusRegistration.PYTHON_NAMES)
+    if out_of_range:
+        raise ValueError(out_of_range)
+    return registration
 
 
 def register(source, target, **options):
@@ -267,24 +296,7 @@ def register(source, target, **options):
         _require_real(name, options[name])
 
     errors = _Errors()
-    registration = errors.watch(vtkMobiusRegistration())
-    registration.SetMaximumNumberOfIterations(int(options["iterations"]))
-    registration.SetConvergenceTolerance(float(options["tolerance"]))
-    registration.SetFillHoles(bool(options["fill_holes"]))
-    registration.SetKeepLargestComponent(bool(options["keep_largest_component"]))
-    registration.SetAllowPoorMaps(bool(options["allow_poor_maps"]))
-    registration.SetResolution(int(options["resolution"]))
-    registration.SetSmoothingTime(float(options["smoothing"]))
-    registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
-    registration.SetNumberOfCandidates(int(options["candidates"]))
-    registration.SetRefine(bool(options["refine"]))
-    registration.SetBasisSize(int(options["basis_size"]))
-    registration.SetGeometricPolish(bool(options["polish"]))
-    registration.SetCandidate(-1 if options["candidate"] is None else int(options["candidate"]))
-    registration.SetNumberOfThreads(int(options["threads"]))
-    out_of_range = registration.CheckParameters(vtkMobiusRegistration.PYTHON_NAMES)
-    if out_of_range:
-        raise ValueError(out_of_range)
+    registration = _registration_filter(options, errors)
     source_mesh, source_name = _as_polydata(source, "source", errors)
     target_mesh, target_name = _as_polydata(target, "target", errors)
     # The filters give an empty output for an empty input (VTK's convention), not an error.
