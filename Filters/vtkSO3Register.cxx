@@ -264,7 +264,8 @@ int vtkSO3Register::ComputeOutput(
     // The Möbius transformation takes the rotation's place: of the rotation only its kind
     // (a reflection or not) is kept.
     const bool reflect = this->TransformMode == REFLECTIONS ||
-      (this->TransformMode == ROTATIONS_AND_REFLECTIONS && result.Determinant < 0);
+      (this->TransformMode == ROTATIONS_AND_REFLECTIONS &&
+        mobius::LandmarksReverseOrientation(landmarks));
     if (!mobius::MoveByLandmarkMobius(landmarks, reflect, sourcePoints))
     {
       vtkErrorMacro(<< "Cannot register: two of the first " << mobius::FittedLandmarkCount
