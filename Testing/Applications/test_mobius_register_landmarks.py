@@ -68,9 +68,9 @@ for name, text, words, code_expected in cases:
     harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", path, "--resolution", "64"], words, ["bad"],
                            code_expected=code_expected)
 harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", landmarks_file("two.csv", "1,1\n2,2\n"),
-                        "--landmark-mode", "1"], ["--landmark-mode needs", "not 1 with 2 landmarks"], ["bad"], 2)
+                        "--landmark-mode", "1"], ["--landmark-mode needs", "not 1 with 2 landmarks"], ["bad"], code_expected=2)
 harness.expect_failure(["--symmetry", hand, "-o", "bad", "--landmarks", good],
-                       ["--landmarks is for registering two meshes"], ["bad"], 2)
+                       ["--landmarks is for registering two meshes"], ["bad"], code_expected=2)
 
 print(f"{len(harness.failures)} failure(s)")
 sys.exit(1 if harness.failures else 0)
