@@ -355,6 +355,7 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   correspondence->SetTargetData(result.TargetCentered);
   correspondence->SetOutputGeometry(options.OutputGeometry);
   correspondence->SetNumberOfThreads(threads);
+  AddLandmarkPoints(result, correspondence);
   if (!RunStage(correspondence, "dense correspondence", sourceName + " -> " + targetName,
         progress, result, result.MobiusCorrespondence, error))
   {

@@ -1,5 +1,6 @@
 #include "vtkDenseCorrespondence.h"
 
+#include "MeshAdjacency.h"
 #include "RegistrationParameters.h"
 #include "ParallelFor.h"
 #include "SphericalPointLocator.h"
@@ -113,6 +114,22 @@ int vtkDenseCorrespondence::ComputeOutput(
     map.Barycentric.push_back(location.Barycentric);
     clamped += location.Clamped ? 1 : 0;
     maximumClampDistance = std::max(maximumClampDistance, location.AngularDistance);
+  }
+  // The landmarks on their own vertices: the located mesh's landmark, a triangle's corner.
+  const mobius::VertexLists corners =
+    mobius::VertexTriangles(points[located].rows(), triangles[located]);
+  for (size_t k = 0; k < this->Landmarks.size(); ++k)
+  {
+    const vtkIdType ends[2] = { this->Landmarks[k].first, this->Landmarks[k].second };
+    const vtkIdType from = ends[query], to = ends[located];
+    if (from < 0 || from >= points[query].rows() || to < 0 || to >= points[located].rows() ||
+      corners.Begin(to) == corners.End(to))
+    {
+      vtkErrorMacro(<< "Cannot map: landmark " << k << " names a point the " << names[0]
+                    << " or the " << names[1] << " does not have, or one in no triangle.");
+      return 0;
+    }
+    mobius::PlaceAtVertex(triangles[located], corners, to, map.Triangle[from], map.Barycentric[from]);
   }
   const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
     inputs[query], inputs[located], map, this->OutputGeometry == TARGET, output);

@@ -53,6 +53,12 @@ for mode in ("0", "1"):
             check(corners[weights.index(max(weights))] == vertex and max(weights) > 1 - 1e-9,
                   f"mode {mode}: vertex {vertex} mapped onto target vertex {vertex}: {row}")
 
+# The Möbius map alone places the landmarks too.
+code, out, err = run(hand, hand, "-o", "moebius", "--landmarks", good, "--refine", "none", "--resolution", "64",
+                     "--json")
+check(code == 0 and all(r < 1e-9 for r in json.loads(out)["landmarks"]["residuals"]),
+      f"--refine none: landmarks on their targets: {code} {err}")
+
 cases = [
     ("missing.csv", None, ["missing.csv", "cannot read the landmarks file"], 2),
     ("malformed.csv", "1,2\n3;4\n", ["malformed.csv line 2", "two vertex numbers", "3;4"], 2),
