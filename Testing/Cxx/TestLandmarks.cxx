@@ -2,12 +2,14 @@
 // mapped onto itself with rotations and reflections allowed has two exact answers, the
 // identity and the mirror map: 3 landmarks must choose either one, whichever the automatic
 // map would be, in both landmark modes, with every landmark landing on its target vertex.
-// Bad landmarks (a vertex the mesh does not have, one the repair removed, a vertex in two
-// landmarks, too few for LandmarkMode 1) are errors naming the problem.
+// A landmark may name a vertex the repair merged into a duplicate. Bad landmarks (a vertex
+// the mesh does not have, one the repair removed, a vertex in two landmarks, too few for
+// LandmarkMode 1) are errors naming the problem.
 #include "MirrorSymmetricMesh.h"
 #include "MobiusTestUtilities.h"
 #include "vtkMobiusRegistration.h"
 
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
 
@@ -124,6 +126,55 @@ int ExpectLandmarksChoose(vtkPolyData* mesh, const std::array<vtkIdType, 3>& ver
   return failures;
 }
 
+// The mesh as a triangle soup (three points of its own per triangle, which the repair merges
+// back): a landmark may name any copy of a vertex, also one the merge dropped.
+int ExpectMergedDuplicates(vtkPolyData* mesh, const std::array<vtkIdType, 3>& vertices)
+{
+  int failures = 0;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> lastCopy(static_cast<size_t>(mesh->GetNumberOfPoints()), -1);
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    mesh->GetCellPoints(c, n, ids);
+    vtkIdType copies[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      copies[k] = points->InsertNextPoint(mesh->GetPoint(ids[k]));
+      lastCopy[ids[k]] = copies[k];
+    }
+    polys->InsertNextCell(3, copies);
+  }
+  vtkNew<vtkPolyData> soup;
+  soup->SetPoints(points);
+  soup->SetPolys(polys);
+  auto registration = Registration(soup, mesh);
+  for (vtkIdType v : vertices)
+  {
+    registration->AddLandmark(lastCopy[v], v);
+  }
+  registration->Update();
+  // The copies named are ones the merge dropped: no output point stands for them.
+  vtkDataArray* kept = registration->GetOutput()->GetPointData()->GetArray("InputPointId");
+  for (vtkIdType i = 0; kept && i < kept->GetNumberOfTuples(); ++i)
+  {
+    for (vtkIdType v : vertices)
+    {
+      MOBIUS_EXPECT(static_cast<vtkIdType>(kept->GetComponent(i, 0)) != lastCopy[v]);
+    }
+  }
+  vtkDataArray* residuals = registration->GetOutput()->GetFieldData()->GetArray("LandmarkResidual");
+  MOBIUS_EXPECT(residuals && residuals->GetNumberOfTuples() == 3);
+  for (vtkIdType k = 0; residuals && k < residuals->GetNumberOfTuples(); ++k)
+  {
+    MOBIUS_EXPECT(residuals->GetComponent(k, 0) < 1e-9);
+  }
+  return failures;
+}
+
 int ExpectBadLandmarks(vtkPolyData* mesh)
 {
   int failures = 0;
@@ -193,6 +244,7 @@ int TestLandmarks(int, char*[])
     failures += ExpectLandmarksChoose(mesh, vertices, identity, mirror, mode, "identity");
     failures += ExpectLandmarksChoose(mesh, vertices, mirror, identity, mode, "mirror map");
   }
+  failures += ExpectMergedDuplicates(mesh, vertices);
   failures += ExpectBadLandmarks(mesh);
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
