@@ -267,21 +267,17 @@ void WarnAboutRefinement(
 std::string LandmarkVertices(const std::vector<std::pair<vtkIdType, vtkIdType>>& landmarks,
   mobius::SpectralSurface surfaces[2], std::vector<std::pair<mobius::Index, mobius::Index>>& pairs)
 {
-  std::vector<mobius::Index> sourceVertices;
-  for (size_t k = 0; k < landmarks.size(); ++k)
+  const std::string error = mobius::vtk::CheckLandmarkPoints(
+    landmarks, surfaces[0].Positions.rows(), surfaces[1].Positions.rows());
+  if (!error.empty())
   {
-    const vtkIdType points[2] = { landmarks[k].first, landmarks[k].second };
-    for (int side = 0; side < 2; ++side)
-    {
-      if (points[side] < 0 || points[side] >= surfaces[side].Positions.rows())
-      {
-        return InputError(side, "landmark " + std::to_string(k) + " names point " +
-            std::to_string(points[side]) + ", and it has " +
-            std::to_string(surfaces[side].Positions.rows()));
-      }
-    }
-    pairs.emplace_back(points[0], points[1]);
-    sourceVertices.push_back(points[0]);
+    return "Cannot refine: " + error + ".";
+  }
+  std::vector<mobius::Index> sourceVertices;
+  for (const auto& landmark : landmarks)
+  {
+    pairs.emplace_back(landmark.first, landmark.second);
+    sourceVertices.push_back(landmark.first);
   }
   mobius::AddPinnedSamples(surfaces[0], sourceVertices);
   return {};

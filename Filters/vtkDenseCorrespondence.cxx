@@ -116,20 +116,25 @@ int vtkDenseCorrespondence::ComputeOutput(
     maximumClampDistance = std::max(maximumClampDistance, location.AngularDistance);
   }
   // The landmarks on their own vertices: the located mesh's landmark, a triangle's corner.
+  error = mobius::vtk::CheckLandmarkPoints(this->Landmarks, points[0].rows(), points[1].rows());
   const mobius::VertexLists corners =
     mobius::VertexTriangles(points[located].rows(), triangles[located]);
-  for (size_t k = 0; k < this->Landmarks.size(); ++k)
+  for (size_t k = 0; error.empty() && k < this->Landmarks.size(); ++k)
   {
     const vtkIdType ends[2] = { this->Landmarks[k].first, this->Landmarks[k].second };
     const vtkIdType from = ends[query], to = ends[located];
-    if (from < 0 || from >= points[query].rows() || to < 0 || to >= points[located].rows() ||
-      corners.Begin(to) == corners.End(to))
+    if (corners.Begin(to) == corners.End(to))
     {
-      vtkErrorMacro(<< "Cannot map: landmark " << k << " names a point the " << names[0]
-                    << " or the " << names[1] << " does not have, or one in no triangle.");
-      return 0;
+      error = "landmark " + std::to_string(k) + " names point " + std::to_string(to) +
+        ", which is in no triangle";
+      break;
     }
     mobius::PlaceAtVertex(triangles[located], corners, to, map.Triangle[from], map.Barycentric[from]);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot map: " << error << ".");
+    return 0;
   }
   const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
     inputs[query], inputs[located], map, this->OutputGeometry == TARGET, output);

@@ -53,26 +53,16 @@ std::array<double, 9> RowMajor(const Eigen::Matrix3d& matrix)
 std::string GatherLandmarks(const std::vector<std::pair<vtkIdType, vtkIdType>>& ids,
   const mobius::Points& source, const mobius::Points& target, mobius::SphereLandmarks& landmarks)
 {
-  const auto count = static_cast<Eigen::Index>(ids.size());
+  const std::string error = mobius::vtk::CheckLandmarkPoints(ids, source.rows(), target.rows());
+  const auto count = static_cast<Eigen::Index>(error.empty() ? ids.size() : 0);
   landmarks.Source.resize(count, 3);
   landmarks.Target.resize(count, 3);
   for (Eigen::Index k = 0; k < count; ++k)
   {
-    const vtkIdType points[2] = { ids[k].first, ids[k].second };
-    const mobius::Points* maps[2] = { &source, &target };
-    for (int side = 0; side < 2; ++side)
-    {
-      if (points[side] < 0 || points[side] >= maps[side]->rows())
-      {
-        return "landmark " + std::to_string(k) + " names point " + std::to_string(points[side]) +
-          " of the " + (side == 0 ? "Source" : "Target") + ", which has " +
-          std::to_string(maps[side]->rows()) + " points";
-      }
-    }
-    landmarks.Source.row(k) = source.row(points[0]);
-    landmarks.Target.row(k) = target.row(points[1]);
+    landmarks.Source.row(k) = source.row(ids[k].first);
+    landmarks.Target.row(k) = target.row(ids[k].second);
   }
-  return {};
+  return error;
 }
 
 void AddTupleArray(vtkFieldData* fieldData, const char* name, int components,

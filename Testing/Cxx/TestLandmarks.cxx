@@ -7,7 +7,9 @@
 // LandmarkMode 1) are errors naming the problem.
 #include "MirrorSymmetricMesh.h"
 #include "MobiusTestUtilities.h"
+#include "vtkDenseCorrespondence.h"
 #include "vtkMobiusRegistration.h"
+#include "vtkSO3Register.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -202,6 +204,22 @@ int ExpectBadLandmarks(vtkPolyData* mesh)
     failures += ExpectError(registration, "LandmarkMode must be 0");
     MOBIUS_EXPECT(registration->CheckParameters(vtkMobiusRegistration::COMMAND_LINE_NAMES)
                     .find("--landmark-mode needs") == 0);
+  }
+  {
+    // The stage filters take the maps' point ids, and refuse one a map does not have.
+    const auto map = mobius_test::MakeSphericalMap(2, mobius_test::BumpySurface);
+    vtkNew<vtkSO3Register> alignment;
+    alignment->SetSourceData(map);
+    alignment->SetTargetData(map);
+    alignment->SetResolution(16);
+    alignment->AddLandmark(0, map->GetNumberOfPoints());
+    failures += ExpectError(alignment, "landmark 0 names point " +
+        std::to_string(map->GetNumberOfPoints()) + " of the Target (port 1), which has");
+    vtkNew<vtkDenseCorrespondence> dense;
+    dense->SetSourceData(map);
+    dense->SetTargetData(map);
+    dense->AddLandmark(-1, 0);
+    failures += ExpectError(dense, "landmark 0 names point -1 of the Source (port 0)");
   }
   {
     // A vertex no triangle uses: the repair drops it, and a landmark cannot name it.
