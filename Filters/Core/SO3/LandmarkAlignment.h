@@ -32,9 +32,9 @@ double LandmarkAngle(const Eigen::Matrix3d& transform, const SphereLandmarks& la
 /// (Kabsch / orthogonal Procrustes, by an SVD of the landmarks' covariance).
 Eigen::Matrix3d FitLandmarkTransform(const SphereLandmarks& landmarks, double determinant);
 
-/// Landmarks from which the best-fit transform is offered as a candidate: 2 points on the
-/// sphere leave a rotation about their bisector free only up to a few degrees when they are
-/// far apart, but nothing when they are close; 3 fix it.
+/// Landmarks from which the best-fit transform is offered as a candidate. With 2, their
+/// covariance has rank 2: a rotation and a reflection fit them equally well, and an error
+/// in one point turns the whole sphere about the other; from 3 on the fit is well posed.
 inline constexpr int FittedTransformLandmarks = 3;
 
 /// Puts first the candidate that brings the landmarks closest together (LandmarkAngle),
