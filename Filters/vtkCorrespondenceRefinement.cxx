@@ -262,6 +262,27 @@ void WarnAboutRefinement(
   }
 }
 
+// The landmarks as vertex pairs of the surfaces, each source vertex made a sample; the
+// error if one names a point an input does not have.
+std::string LandmarkVertices(const std::vector<std::pair<vtkIdType, vtkIdType>>& landmarks,
+  mobius::SpectralSurface surfaces[2], std::vector<std::pair<mobius::Index, mobius::Index>>& pairs)
+{
+  const std::string error = mobius::vtk::CheckLandmarkPoints(
+    landmarks, surfaces[0].Positions.rows(), surfaces[1].Positions.rows());
+  if (!error.empty())
+  {
+    return "Cannot refine: " + error + ".";
+  }
+  std::vector<mobius::Index> sourceVertices;
+  for (const auto& landmark : landmarks)
+  {
+    pairs.emplace_back(landmark.first, landmark.second);
+    sourceVertices.push_back(landmark.first);
+  }
+  mobius::AddPinnedSamples(surfaces[0], sourceVertices);
+  return {};
+}
+
 // Empty when `candidate` (-1: none given) is one of the registration's `count` candidates,
 // else the error.
 std::string CheckCandidate(int candidate, size_t count)
@@ -433,6 +454,13 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     vtkErrorMacro(<< InputError(1, error));
     return 0;
   }
+  std::vector<std::pair<mobius::Index, mobius::Index>> landmarks;
+  error = LandmarkVertices(this->Landmarks, surfaces, landmarks);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
   const std::vector<mobius::RotationMatrix> starts =
     CandidateStarts(inputs[0], this->SearchCandidates);
   error = CheckCandidate(this->Candidate, starts.size());
@@ -443,7 +471,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
   }
   const mobius::RefinedCorrespondence refined = mobius::RefineCorrespondence(surfaces[0],
     surfaces[1],
-    { maps[0].Sphere, maps[1].Sphere, maps[1].Triangles, locator, starts, BestReflects(inputs[0]) },
+    { maps[0].Sphere, maps[1].Sphere, maps[1].Triangles, locator, starts, BestReflects(inputs[0]),
+      landmarks },
     RefinementOptions(this, threads));
   if (refined.Stopped)
   {

@@ -1,5 +1,6 @@
 #include "vtkDenseCorrespondence.h"
 
+#include "MeshAdjacency.h"
 #include "RegistrationParameters.h"
 #include "ParallelFor.h"
 #include "SphericalPointLocator.h"
@@ -113,6 +114,27 @@ int vtkDenseCorrespondence::ComputeOutput(
     map.Barycentric.push_back(location.Barycentric);
     clamped += location.Clamped ? 1 : 0;
     maximumClampDistance = std::max(maximumClampDistance, location.AngularDistance);
+  }
+  // The landmarks on their own vertices: the located mesh's landmark, a triangle's corner.
+  error = mobius::vtk::CheckLandmarkPoints(this->Landmarks, points[0].rows(), points[1].rows());
+  const mobius::VertexLists corners =
+    mobius::VertexTriangles(points[located].rows(), triangles[located]);
+  for (size_t k = 0; error.empty() && k < this->Landmarks.size(); ++k)
+  {
+    const vtkIdType ends[2] = { this->Landmarks[k].first, this->Landmarks[k].second };
+    const vtkIdType from = ends[query], to = ends[located];
+    if (corners.Begin(to) == corners.End(to))
+    {
+      error = "landmark " + std::to_string(k) + " names point " + std::to_string(to) +
+        ", which is in no triangle";
+      break;
+    }
+    mobius::PlaceAtVertex(triangles[located], corners, to, map.Triangle[from], map.Barycentric[from]);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< "Cannot map: " << error << ".");
+    return 0;
   }
   const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
     inputs[query], inputs[located], map, this->OutputGeometry == TARGET, output);

@@ -36,8 +36,13 @@
  * vertex. Field data: `ClampedPoints`, `MaximumClampDistance` (radians),
  * `NumberOfThreadsUsed`, and the source's field data.
  *
+ * Landmarks (AddLandmark, point ids of the two input maps): each source landmark is placed
+ * on its target landmark's vertex itself (with TARGET_TO_SOURCE, each target landmark on its
+ * source vertex); the other points as located.
+ *
  * Errors: an input missing, empty, not on the unit sphere or without `SurfacePoints`, or
- * with a triangle that refers to a point id out of range.
+ * with a triangle that refers to a point id out of range; a landmark naming a point an
+ * input does not have.
  *
  * @sa vtkSO3Register
  */
@@ -45,14 +50,14 @@
 #define vtkDenseCorrespondence_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkMobiusThreadedPolyDataAlgorithm.h"
+#include "vtkMobiusLandmarkPolyDataAlgorithm.h"
 
 class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkDenseCorrespondence
-  : public vtkMobiusThreadedPolyDataAlgorithm
+  : public vtkMobiusLandmarkPolyDataAlgorithm
 {
 public:
   static vtkDenseCorrespondence* New();
-  vtkTypeMacro(vtkDenseCorrespondence, vtkMobiusThreadedPolyDataAlgorithm);
+  vtkTypeMacro(vtkDenseCorrespondence, vtkMobiusLandmarkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum OutputGeometries

@@ -17,6 +17,8 @@
 
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 class vtkAlgorithm;
 class vtkFieldData;
@@ -66,6 +68,12 @@ std::string CheckSurfacePoints(vtkPolyData* input);
 
 /// Reads point data `SurfacePoints` (CheckSurfacePoints, and finite).
 std::string ExtractSurfacePoints(vtkPolyData* input, Points& surfacePoints);
+
+/// The first of a stage filter's landmarks (point ids of its Source and Target maps) naming
+/// a point its map does not have, e.g. "landmark 2 names point 5000 of the Target (port 1),
+/// which has 4000 points"; empty if every one names a point.
+std::string CheckLandmarkPoints(const std::vector<std::pair<vtkIdType, vtkIdType>>& landmarks,
+  vtkIdType sourcePoints, vtkIdType targetPoints);
 
 /// For a filter's RequestData, inside `catch (...)`: reports the exception being handled
 /// (std::bad_alloc as running out of memory) as the filter's error, prefixed by `subject`
