@@ -1,0 +1,55 @@
+"""Run by the ParaView GUI from gui_screenshot.sh (MOBIUS_GUI_SCRIPT=this file): loads the
+plugin and two four-legged meshes (the same orientation: head towards +x, up +y), runs the
+correspondence macro, then picks six landmarks on each as a user would with Select Points On
+(the muzzle's tip, the rump's end, the lowest point of each leg), each pair by the Add
+Landmark Pair macro, applies the registration, and writes a marker file when the landmarks'
+views are drawn. Paths come from the environment (paraview passes no arguments to a script)."""
+import os
+
+import numpy as np
+
+from paraview import servermanager
+from paraview.simple import (
+    GetActiveSource, GetLayouts, LoadPlugin, OpenDataFile, Render, SelectIDs, SetActiveSource,
+    SetActiveView)
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+env = os.environ
+LoadPlugin(env["MOBIUS_PLUGIN"], remote=False, ns=globals())
+source = OpenDataFile(env["MOBIUS_SOURCE"])
+target = OpenDataFile(env["MOBIUS_TARGET"])
+SetActiveSource(source)
+exec(open(env["MOBIUS_MACRO"]).read(), dict(globals()))
+registration = GetActiveSource()  # the macro leaves its filter active
+
+
+def landmarks(mesh):
+    """Muzzle, rump, and the lowest point of each leg (quadrants of x and z)."""
+    points = vtk_to_numpy(servermanager.Fetch(mesh).GetPoints().GetData())
+    chosen = [int(np.argmax(points[:, 0])), int(np.argmin(points[:, 0]))]
+    for front in (True, False):
+        for left in (True, False):
+            leg = np.flatnonzero(((points[:, 0] > 0) == front) & ((points[:, 2] > 0) == left))
+            chosen.append(int(leg[np.argmin(points[leg, 1])]))
+    return chosen
+
+
+for source_id, target_id in zip(landmarks(source), landmarks(target)):
+    SelectIDs(IDs=[0, source_id], FieldType="POINT", Source=source)
+    SelectIDs(IDs=[0, target_id], FieldType="POINT", Source=target)
+    exec(open(env["MOBIUS_LANDMARK_MACRO"]).read(), dict(globals()))
+registration.UpdatePipeline()  # Apply
+for (name, _), layout in GetLayouts().items():
+    if name.startswith("Mobius"):
+        for cell in range(7):
+            view = layout.GetView(cell)
+            if view is not None:
+                Render(servermanager._getPyProxy(view))
+landmark_layout = [layout for (name, _), layout in GetLayouts().items() if name.startswith("Mobius landmarks")][0]
+SetActiveView(servermanager._getPyProxy(landmark_layout.GetView(1)))
+SetActiveSource(registration)
+fields = servermanager.Fetch(registration).GetFieldData()
+residuals = fields.GetArray("LandmarkResidual")
+print("landmark residuals:", [residuals.GetValue(i) for i in range(residuals.GetNumberOfTuples())] if residuals else None)
+with open(env["MOBIUS_DONE"], "w") as done:
+    done.write("drawn\n")

@@ -1,0 +1,144 @@
+"""Drives the Add Landmark Pair macro with programmatic point selections, as the GUI's
+selection tools would leave them, and checks the landmarks it makes.
+
+Usage: pvpython test_landmarks_macro.py PLUGIN MESH MACRO OUTPUT_DIR
+
+The source is MESH, the target MESH turned by a Transform (its own pipeline object): vertex
+i of one is vertex i of the other, so the right pairs are (i, i). Checked: the refusals (no
+filter, zero or several points selected), a pick on the source then on the target, on the
+target then on the source (a pending pick in between), both at once with the target's point
+selected on the reader under the Transform; the filter's Landmarks property after each run;
+the glyph filters' points and numbers on each mesh; and, after the registration, the
+landmarks' field data and the map at the landmarks.
+"""
+import os
+import sys
+
+import numpy as np
+
+from paraview import servermanager
+from paraview.simple import (
+    ClearSelection, FindSource, GetLayouts, GetRepresentation, LoadPlugin, OpenDataFile,
+    SaveScreenshot, SelectIDs, SetActiveSource, Transform)
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+plugin, mesh, macro, output = sys.argv[1:5]
+os.makedirs(output, exist_ok=True)
+LoadPlugin(plugin, remote=False, ns=globals())
+assert servermanager.ProxyManager().GetPrototypeProxy(
+    "filters", "MobiusRegistration").GetProperty("Landmarks") is not None
+
+
+def run_macro():
+    exec(open(macro).read(), dict(globals()))
+
+
+def expect_refusal(words):
+    try:
+        run_macro()
+    except RuntimeError as error:
+        assert words in str(error), str(error)
+        print("refused:", error)
+        return
+    raise AssertionError(f"the macro did not refuse: {words}")
+
+
+def select_points(proxy, *point_ids):
+    SelectIDs(IDs=[i for point_id in point_ids for i in (0, point_id)], FieldType="POINT", Source=proxy)
+
+
+def stored_ids(side):
+    """The point ids the macro keeps for the landmarks on `side`, in landmark order."""
+    selection = FindSource(f"Landmark ids on {side} of MobiusRegistration1")
+    return [int(v) for v in selection.IDs][1::2]
+
+
+def points(proxy):
+    return vtk_to_numpy(servermanager.Fetch(proxy).GetPoints().GetData())
+
+
+source = OpenDataFile(mesh)
+target_reader = OpenDataFile(mesh)
+target = Transform(Input=target_reader)
+target.Transform.Rotate = [0.0, 0.0, 90.0]
+source_points, target_points = points(source), points(target)
+
+expect_refusal("no Mobius Registration filter")
+registration = MobiusRegistration(Source=source, Target=target)  # noqa: F821 (the plugin's)
+SetActiveSource(source)  # as after a selection in the GUI: the macro must find the filter
+
+# Three landmarks far apart: the extreme vertices along x, y and z.
+a, b, c = (int(np.argmax(source_points[:, axis])) for axis in range(3))
+assert len({a, b, c}) == 3, (a, b, c)
+
+# Nothing selected: the side-by-side layout, no landmark.
+run_macro()
+layouts = [layout for (name, _), layout in GetLayouts().items()
+           if name == "Mobius landmarks: MobiusRegistration1"]
+assert len(layouts) == 1 and None not in [layouts[0].GetView(cell) for cell in (1, 2)], list(GetLayouts())
+assert list(registration.Landmarks) == []
+
+# Source first: a pending pick, then the pair.
+select_points(source, a)
+run_macro()
+assert list(registration.Landmarks) == [], list(registration.Landmarks)
+assert source.SMProxy.GetSelectionInput(0) is None  # the pick was consumed
+assert stored_ids("source") == [a] and stored_ids("target") == []
+assert np.array_equal(points(FindSource("Landmarks on source of MobiusRegistration1")), source_points[[a]])
+select_points(target, a)
+run_macro()
+assert list(registration.Landmarks) == [a, a], list(registration.Landmarks)
+
+# Target first.
+select_points(target, b)
+run_macro()
+assert list(registration.Landmarks) == [a, a]
+select_points(source, b)
+run_macro()
+assert list(registration.Landmarks) == [a, a, b, b], list(registration.Landmarks)
+
+# Refusals: several points, or none (an id the mesh does not have), on one mesh.
+select_points(source, a, b)
+expect_refusal("2 points are selected on the source")
+select_points(source, len(source_points) + 5)
+expect_refusal("0 points are selected on the source")
+ClearSelection(source)
+
+# Both at once, the target's point selected on the reader under the Transform (same points).
+select_points(source, c)
+select_points(target_reader, c)
+run_macro()
+assert list(registration.Landmarks) == [a, a, b, b, c, c], list(registration.Landmarks)
+
+# The glyphs: each mesh's landmarks at its own points; landmark k has color k on both meshes,
+# and the color legend says k.
+views = [servermanager._getPyProxy(layouts[0].GetView(cell)) for cell in (1, 2)]
+colors = []
+for side, view, mesh_points in zip(("source", "target"), views, (source_points, target_points)):
+    assert stored_ids(side) == [a, b, c]
+    glyphs = FindSource(f"Landmark glyphs on {side} of MobiusRegistration1")
+    marked = servermanager.Fetch(FindSource(f"Landmark point ids on {side} of MobiusRegistration1"))
+    marked_ids = vtk_to_numpy(marked.GetPointData().GetArray("LandmarkPointId")).astype(int)
+    assert sorted(marked_ids) == sorted([a, b, c])
+    assert np.allclose(vtk_to_numpy(marked.GetPoints().GetData()), mesh_points[marked_ids])
+    display = GetRepresentation(glyphs, view)
+    assert display.Visibility and list(display.ColorArrayName) == ["POINTS", "LandmarkPointId"]
+    table = display.LookupTable
+    assert list(table.Annotations) == [str(a), "1", str(b), "2", str(c), "3"], list(table.Annotations)
+    colors.append(list(table.IndexedColors))
+assert colors[0] == colors[1] and len(set(map(tuple, np.reshape(colors[0], (-1, 3))))) == 3
+SaveScreenshot(os.path.join(output, "landmarks.png"), layouts[0], ImageResolution=[1000, 500])
+
+# The registration with the three landmarks: one residual per landmark, and the map sends
+# each landmark's source point onto its target point.
+registration.UpdatePipeline()
+result = servermanager.Fetch(registration)
+fields = result.GetFieldData()
+assert fields.GetArray("LandmarkCount").GetValue(0) == 3
+residuals = vtk_to_numpy(fields.GetArray("LandmarkResidual"))
+diagonal = np.linalg.norm(target_points.max(axis=0) - target_points.min(axis=0))
+mapped = vtk_to_numpy(result.GetPoints().GetData())
+errors = np.linalg.norm(mapped[[a, b, c]] - target_points[[a, b, c]], axis=1) / diagonal
+assert residuals.shape[0] == 3 and np.all(np.isfinite(residuals)), residuals
+assert errors.max() < 0.02, errors
+print("3 landmarks; residuals", residuals, "; mapped landmark error / diagonal", errors)
