@@ -1,5 +1,6 @@
 #include "CommandLine.h"
 
+#include "LandmarkFile.h"
 #include "ParameterRules.h"
 #include "vtkSO3Register.h"
 
@@ -213,6 +214,16 @@ bool SetOrbifold(const Values& values, CommandLine& line, std::string& error)
   return true;
 }
 
+bool SetLandmarks(const Values& values, CommandLine& line, std::string& error)
+{
+  if (!line.Pipeline.Landmarks.empty())
+  {
+    error = "--landmarks may be given once";
+    return false;
+  }
+  return ReadLandmarkFile(values[0], line.Pipeline.Landmarks, error);
+}
+
 bool SetCones(const Values& values, CommandLine& line, std::string& error)
 {
   const std::string& text = values[0];
@@ -341,6 +352,19 @@ const std::vector<Option>& Options()
         "chooses: for a map that came out turned or mirrored\n"
         "while a warning named a near-equal runner-up",
         &PipelineOptions::Candidate),
+      Heading("Landmarks:"),
+      { { "--landmarks" }, "--landmarks FILE",
+        "points whose images are known: per line a source vertex\n"
+        "and its target vertex (0-based vertex numbers of the\n"
+        "files, separated by a comma or spaces; # comments).\n"
+        "The rotation is chosen by them, the refinement maps them\n"
+        "exactly; residuals in --json",
+        1, SetLandmarks },
+      PipelineInteger("--landmark-mode", "--landmark-mode M",
+        "0: the rotation search chooses the transform that brings\n"
+        "the landmarks together (default); 1: a Moebius transform\n"
+        "sends the first 3 onto their targets (needs 3)",
+        &PipelineOptions::LandmarkMode),
       Heading("Correspondence:"),
       PipelineChoice("--refine", "--refine METHOD",
         "spectral | none: refine the Moebius map (ZoomOut on the\n"
@@ -430,6 +454,12 @@ bool CheckCombination(
   {
     error = "--degree is for registering two meshes; --symmetry and --orbifold use the Moebius "
             "centering (degree 1)";
+    return false;
+  }
+  if ((commandLine.OrbifoldCopies > 0 || commandLine.Symmetry) &&
+    !commandLine.Pipeline.Landmarks.empty())
+  {
+    error = "--landmarks is for registering two meshes, not for --symmetry or --orbifold";
     return false;
   }
   if (commandLine.OrbifoldCopies > 0)

@@ -152,6 +152,21 @@ std::string Refinement(vtkPolyData* refined, bool done)
   return out.str();
 }
 
+// The landmarks: how many, the mode, and each one's residual (LandmarkResidual).
+std::string Landmarks(const PipelineOptions& options, vtkPolyData* map)
+{
+  std::ostringstream out;
+  out << "{\"count\": " << options.Landmarks.size() << ", \"mode\": " << options.LandmarkMode
+      << ", \"residuals\": [";
+  vtkDataArray* residuals = map->GetFieldData()->GetArray("LandmarkResidual");
+  for (vtkIdType k = 0; residuals && k < residuals->GetNumberOfTuples(); ++k)
+  {
+    out << (k ? ", " : "") << Number(residuals->GetComponent(k, 0));
+  }
+  out << "]}";
+  return out.str();
+}
+
 // "stages": [{"name", "seconds"}...], "total_seconds": the job's wall time (less than the
 // stages' sum where stages ran side by side), or their sum where it was not measured.
 std::string StageTimes(const PipelineResult& result)
@@ -208,7 +223,8 @@ std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
 }
 
 std::string JsonSummary(const std::string& source, const std::string& target,
-  const PipelineResult& result, const OutputFiles& outputs, double demoError)
+  const PipelineOptions& options, const PipelineResult& result, const OutputFiles& outputs,
+  double demoError)
 {
   std::ostringstream json;
   json << "{\n  \"source\": " << Quoted(source) << ",\n  \"target\": " << Quoted(target)
@@ -235,6 +251,7 @@ std::string JsonSummary(const std::string& source, const std::string& target,
        << ",\n  \"target_map\": " << MapQuality(result.TargetMap, result.TargetCentered)
        << ",\n  \"clamped_points\": " << Number(FieldValue(result.MobiusCorrespondence, "ClampedPoints"))
        << ",\n  \"refinement\": " << Refinement(result.Correspondence, result.Correspondence != result.MobiusCorrespondence)
+       << ",\n  \"landmarks\": " << Landmarks(options, result.Correspondence)
        << ",\n  " << StageTimes(result) << ",\n  \"outputs\": {\"mesh\": "
        << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath)
        << ", \"picture\": " << (outputs.PicturePath.empty() ? "null" : Quoted(outputs.PicturePath))

@@ -12,7 +12,8 @@
 #include <string>
 
 std::string JsonSummary(const std::string& source, const std::string& target,
-  const PipelineResult& result, const OutputFiles& outputs, double demoError);
+  const PipelineOptions& options, const PipelineResult& result, const OutputFiles& outputs,
+  double demoError);
 
 /// The --symmetry summary: symmetry distance, mirror plane, candidate reflections, the
 /// map's quality, the refinement, stages and outputs.

@@ -1,5 +1,7 @@
 #include "RegistrationPipeline.h"
 
+#include "ParameterRules.h"
+
 #include <utility>
 
 namespace
@@ -15,6 +17,7 @@ std::string InCommandLineWords(std::string text)
     { "(BasisSize)", "(--basis-size)" },
     { "set TransformMode to REFLECTIONS", "try --transform reflection" },
     { "set TransformMode to ROTATIONS", "try --transform rotation" },
+    { "LandmarkMode 1", "--landmark-mode 1" },
   };
   for (const auto& [property, option] : words)
   {
@@ -42,6 +45,13 @@ bool RunRegistration(vtkPolyData* source, vtkPolyData* target, const std::string
   const std::string& targetName, const PipelineOptions& options, PipelineResult& result,
   std::string& error, const StageProgress& progress)
 {
+  // The landmarks' vertex numbers against the meshes read, before any stage runs.
+  error = mobius::CheckLandmarkVertices(options, source->GetNumberOfPoints(),
+    target->GetNumberOfPoints(), mobius::ParameterNaming::CommandLine);
+  if (!error.empty())
+  {
+    return false;
+  }
   return InCommandLineWords(RunRegistrationPipeline(source, target, sourceName, targetName,
                               options, result, error, progress),
     result, error);

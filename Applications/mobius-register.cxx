@@ -401,7 +401,7 @@ int Run(int argc, char* argv[])
   }
   if (commandLine.Json)
   {
-    std::cout << JsonSummary(sourceName, targetName, result, outputs, demoError);
+    std::cout << JsonSummary(sourceName, targetName, commandLine.Pipeline, result, outputs, demoError);
   }
   else if (verbose)
   {

@@ -1,6 +1,7 @@
 #include "MobiusPipeline.h"
 
 #include "MobiusFilterMessages.h"
+#include "MobiusSphericalMapData.h"
 #include "ParallelFor.h"
 #include "RegistrationParameters.h"
 #include "vtkCorrespondenceRefinement.h"
@@ -13,9 +14,13 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkMath.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkStringArray.h"
 
@@ -23,6 +28,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <unordered_map>
 #include <utility>
 
 namespace
@@ -127,6 +133,45 @@ bool MapToSphere(vtkPolyData* mesh, const std::string& name, const std::string& 
   }
   return true;
 }
+
+// The landmarks, as points of the maps, to a stage filter.
+void AddLandmarkPoints(const PipelineResult& result, vtkMobiusLandmarkPolyDataAlgorithm* stage)
+{
+  for (size_t k = 0; k < result.SourceLandmarks.size(); ++k)
+  {
+    stage->AddLandmark(result.SourceLandmarks[k], result.TargetLandmarks[k]);
+  }
+}
+
+// Field data `LandmarkCount` and `LandmarkResidual` of the final map: per landmark, the
+// straight-line distance between the image of its source point (MappedPoints) and its target
+// point on the target surface, over sqrt(target area).
+void AddLandmarkResiduals(PipelineResult& result)
+{
+  vtkFieldData* fields = result.Correspondence->GetFieldData();
+  mobius::vtk::SetFieldCount(
+    fields, "LandmarkCount", static_cast<vtkIdType>(result.SourceLandmarks.size()));
+  vtkDataArray* mapped = result.Correspondence->GetPointData()->GetArray("MappedPoints");
+  vtkDataArray* targetSurface = result.TargetCentered->GetPointData()->GetArray("SurfacePoints");
+  vtkDataArray* targetAreas = result.TargetCentered->GetCellData()->GetArray("SurfaceArea");
+  vtkNew<vtkDoubleArray> residuals;
+  residuals->SetName("LandmarkResidual");
+  double area = 0;
+  for (vtkIdType t = 0; targetAreas && t < targetAreas->GetNumberOfTuples(); ++t)
+  {
+    area += targetAreas->GetComponent(t, 0);
+  }
+  for (size_t k = 0; mapped && targetSurface && area > 0 && k < result.SourceLandmarks.size(); ++k)
+  {
+    double image[3], target[3];
+    mapped->GetTuple(result.SourceLandmarks[k], image);
+    targetSurface->GetTuple(result.TargetLandmarks[k], target);
+    residuals->InsertNextValue(
+      std::sqrt(vtkMath::Distance2BetweenPoints(image, target) / area));
+  }
+  fields->RemoveArray("LandmarkResidual");
+  fields->AddArray(residuals);
+}
 }
 
 bool MapAndCenter(vtkPolyData* mesh, const std::string& name,
@@ -154,6 +199,56 @@ bool MapAndCenter(vtkPolyData* mesh, const std::string& name,
   center->SetDegree(options.CenteringDegree);
   return RunStage(
     center, "centering" + stages.Which, name, progress, result, centered, error, stages.Abort);
+}
+
+bool FindLandmarkPoints(vtkPolyData* mesh, vtkPolyData* map, bool source,
+  const mobius::RegistrationParameters& options, const std::string& name,
+  std::vector<vtkIdType>& points, std::string& error)
+{
+  points.clear();
+  if (options.Landmarks.empty())
+  {
+    return true;
+  }
+  vtkDataArray* inputIds = map->GetPointData()->GetArray("InputPointId");
+  vtkDataArray* surface = map->GetPointData()->GetArray("SurfacePoints");
+  std::unordered_map<vtkIdType, vtkIdType> pointOf;
+  for (vtkIdType i = 0; inputIds && i < inputIds->GetNumberOfTuples(); ++i)
+  {
+    pointOf.emplace(static_cast<vtkIdType>(inputIds->GetComponent(i, 0)), i);
+  }
+  for (size_t k = 0; k < options.Landmarks.size(); ++k)
+  {
+    const vtkIdType vertex =
+      static_cast<vtkIdType>(source ? options.Landmarks[k].Source : options.Landmarks[k].Target);
+    const auto found = pointOf.find(vertex);
+    vtkIdType point = found != pointOf.end() ? found->second : -1;
+    // A duplicate the repair merged: the point kept is at the same place on the surface.
+    if (point < 0 && mesh != map && surface && vertex >= 0 && vertex < mesh->GetNumberOfPoints())
+    {
+      double position[3], candidate[3];
+      mesh->GetPoint(vertex, position);
+      for (vtkIdType i = 0; i < surface->GetNumberOfTuples() && point < 0; ++i)
+      {
+        surface->GetTuple(i, candidate);
+        if (candidate[0] == position[0] && candidate[1] == position[1] &&
+          candidate[2] == position[2])
+        {
+          point = i;
+        }
+      }
+    }
+    if (point < 0)
+    {
+      error = name + ": landmark " + std::to_string(k) + "'s " + (source ? "source" : "target") +
+        " vertex " + std::to_string(vertex) +
+        " is not on the mapped surface: the mesh's repair removed it (a vertex no triangle "
+        "uses, or one outside the largest component); choose another vertex";
+      return false;
+    }
+    points.push_back(point);
+  }
+  return true;
 }
 
 double FieldValue(vtkPolyData* data, const char* name, int component)
@@ -231,6 +326,14 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
     }
   }
 
+  if (!FindLandmarkPoints(source, result.SourceCentered, true, options, sourceName,
+        result.SourceLandmarks, error) ||
+    !FindLandmarkPoints(target, result.TargetCentered, false, options, targetName,
+      result.TargetLandmarks, error))
+  {
+    return false;
+  }
+
   vtkNew<vtkSO3Register> registration;
   registration->SetSourceData(result.SourceCentered);
   registration->SetTargetData(result.TargetCentered);
@@ -239,6 +342,8 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   registration->SetTransformMode(options.TransformMode);
   registration->SetNumberOfCandidates(options.NumberOfCandidates);
   registration->SetNumberOfThreads(threads);
+  registration->SetLandmarkMode(options.LandmarkMode);
+  AddLandmarkPoints(result, registration);
   if (!RunStage(registration, "rotational alignment", sourceName + " -> " + targetName, progress,
         result, result.Aligned, error))
   {
@@ -257,6 +362,10 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   }
   result.Correspondence = result.MobiusCorrespondence;
   auto finish = [&](bool succeeded) {
+    if (succeeded)
+    {
+      AddLandmarkResiduals(result);
+    }
     result.WallSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return succeeded;
@@ -286,6 +395,7 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   refinement->SetGeometricPolish(options.GeometricPolish);
   refinement->SetCandidate(options.Candidate);
   refinement->SetNumberOfThreads(threads);
+  AddLandmarkPoints(result, refinement);
   return finish(RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress,
     result, result.Correspondence, error));
 }

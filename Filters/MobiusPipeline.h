@@ -35,6 +35,9 @@ struct PipelineResult
   vtkSmartPointer<vtkPolyData> Aligned;                        // source moved by vtkSO3Register
   vtkSmartPointer<vtkPolyData> MobiusCorrespondence; // vtkDenseCorrespondence output
   vtkSmartPointer<vtkPolyData> Correspondence; // the final map: refined, or the Möbius one
+  /// Per landmark, its source vertex and its target vertex as points of the maps (the
+  /// user's vertex numbers found through the maps' `InputPointId`).
+  std::vector<vtkIdType> SourceLandmarks, TargetLandmarks;
   std::vector<StageTiming> Stages;
   /// The whole job's wall time, 0 if not measured: less than the sum of Stages, since
   /// some stages run side by side.
@@ -86,6 +89,15 @@ VTKMOBIUSREGISTRATIONFILTERS_EXPORT bool RunOrbifoldPipeline(vtkPolyData* mesh,
   const std::string& name, const mobius::RegistrationParameters& options, int copies,
   const long long cones[2], bool covering, PipelineResult& result, std::string& error,
   const StageProgress& progress = {});
+
+/// Per landmark, the point of `map` (a spherical map of `mesh`) whose InputPointId is its
+/// vertex on this side (`source`: the landmarks' source vertices, else their target
+/// vertices); a vertex the repair merged into a duplicate (not in InputPointId) is found by
+/// its position on the surface. False with `error` set, naming the mesh by `name`, when the
+/// repair removed a landmark's vertex.
+VTKMOBIUSREGISTRATIONFILTERS_EXPORT bool FindLandmarkPoints(vtkPolyData* mesh, vtkPolyData* map,
+  bool source, const mobius::RegistrationParameters& options, const std::string& name,
+  std::vector<vtkIdType>& points, std::string& error);
 
 /// Value of component `component` of field-data array `name`, NaN if absent.
 VTKMOBIUSREGISTRATIONFILTERS_EXPORT double FieldValue(

@@ -262,6 +262,31 @@ void WarnAboutRefinement(
   }
 }
 
+// The landmarks as vertex pairs of the surfaces, each source vertex made a sample; the
+// error if one names a point an input does not have.
+std::string LandmarkVertices(const std::vector<std::pair<vtkIdType, vtkIdType>>& landmarks,
+  mobius::SpectralSurface surfaces[2], std::vector<std::pair<mobius::Index, mobius::Index>>& pairs)
+{
+  std::vector<mobius::Index> sourceVertices;
+  for (size_t k = 0; k < landmarks.size(); ++k)
+  {
+    const vtkIdType points[2] = { landmarks[k].first, landmarks[k].second };
+    for (int side = 0; side < 2; ++side)
+    {
+      if (points[side] < 0 || points[side] >= surfaces[side].Positions.rows())
+      {
+        return InputError(side, "landmark " + std::to_string(k) + " names point " +
+            std::to_string(points[side]) + ", and it has " +
+            std::to_string(surfaces[side].Positions.rows()));
+      }
+    }
+    pairs.emplace_back(points[0], points[1]);
+    sourceVertices.push_back(points[0]);
+  }
+  mobius::AddPinnedSamples(surfaces[0], sourceVertices);
+  return {};
+}
+
 // Empty when `candidate` (-1: none given) is one of the registration's `count` candidates,
 // else the error.
 std::string CheckCandidate(int candidate, size_t count)
@@ -433,6 +458,13 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     vtkErrorMacro(<< InputError(1, error));
     return 0;
   }
+  std::vector<std::pair<mobius::Index, mobius::Index>> landmarks;
+  error = LandmarkVertices(this->Landmarks, surfaces, landmarks);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
   const std::vector<mobius::RotationMatrix> starts =
     CandidateStarts(inputs[0], this->SearchCandidates);
   error = CheckCandidate(this->Candidate, starts.size());
@@ -443,7 +475,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
   }
   const mobius::RefinedCorrespondence refined = mobius::RefineCorrespondence(surfaces[0],
     surfaces[1],
-    { maps[0].Sphere, maps[1].Sphere, maps[1].Triangles, locator, starts, BestReflects(inputs[0]) },
+    { maps[0].Sphere, maps[1].Sphere, maps[1].Triangles, locator, starts, BestReflects(inputs[0]),
+      landmarks },
     RefinementOptions(this, threads));
   if (refined.Stopped)
   {

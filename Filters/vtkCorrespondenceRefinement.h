@@ -63,7 +63,13 @@
  * eigensolver. A stored basis of another size is ignored (a new one is computed); one
  * computed for another surface is an error. These arrays are not passed to the output.
  *
- * Errors: inputs that are not spherical maps with `SurfacePoints`, meshes too small for
+ * Landmarks (AddLandmark, point ids of the two input maps): every candidate maps each
+ * source landmark onto its target landmark (a hard constraint of ZoomOut's pointwise step,
+ * and a heavy row of its functional-map fit), the candidates whose rotation leaves the
+ * landmarks' sphere points much farther apart than the closest one does are not kept, and
+ * the geometric polish holds each landmark on its target vertex, where it ends.
+ *
+ * Errors: a landmark naming a point an input does not have, inputs that are not spherical maps with `SurfacePoints`, meshes too small for
  * the basis, a stored basis of another surface, a Laplacian that cannot be factorized or
  * an eigensolver that does not converge.
  *
@@ -73,14 +79,14 @@
 #define vtkCorrespondenceRefinement_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkMobiusThreadedPolyDataAlgorithm.h"
+#include "vtkMobiusLandmarkPolyDataAlgorithm.h"
 
 class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkCorrespondenceRefinement
-  : public vtkMobiusThreadedPolyDataAlgorithm
+  : public vtkMobiusLandmarkPolyDataAlgorithm
 {
 public:
   static vtkCorrespondenceRefinement* New();
-  vtkTypeMacro(vtkCorrespondenceRefinement, vtkMobiusThreadedPolyDataAlgorithm);
+  vtkTypeMacro(vtkCorrespondenceRefinement, vtkMobiusLandmarkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum OutputGeometries

@@ -5,6 +5,8 @@
 #include "RegistrationParameters.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkDataArray.h"
+#include "vtkPointData.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -62,7 +64,39 @@ mobius::RegistrationParameters ParametersOf(vtkMobiusRegistration* filter)
   options.Candidate = filter->GetCandidate();
   options.OutputGeometry = filter->GetOutputGeometry();
   options.NumberOfThreads = filter->GetNumberOfThreads();
+  options.LandmarkMode = filter->GetLandmarkMode();
+  for (vtkIdType k = 0; k < filter->GetNumberOfLandmarks(); ++k)
+  {
+    options.Landmarks.push_back(
+      { filter->GetLandmarkSourceVertex(k), filter->GetLandmarkTargetVertex(k) });
+  }
   return options;
+}
+
+// How many vertex numbers a landmark may name on `input`: its points, or for a centered map
+// the numbers of the mesh it was made from (its InputPointId values).
+mobius::Index LandmarkVertexCount(vtkPolyData* input, const mobius::RegistrationParameters& options)
+{
+  vtkDataArray* ids = input->GetPointData()->GetArray("InputPointId");
+  if (options.InputsAreCenteredMaps && ids && ids->GetNumberOfTuples() > 0)
+  {
+    return static_cast<mobius::Index>(ids->GetRange(0)[1]) + 1;
+  }
+  return input->GetNumberOfPoints();
+}
+
+// The first parameter outside its allowed values, the landmarks' vertices checked against
+// the inputs when there are inputs; empty if none is.
+std::string CheckOptions(const mobius::RegistrationParameters& options, vtkPolyData* source,
+  vtkPolyData* target, mobius::ParameterNaming naming)
+{
+  std::string problem = mobius::CheckRegistrationParameters(options, naming);
+  if (problem.empty() && source && target)
+  {
+    problem = mobius::CheckLandmarkVertices(options, LandmarkVertexCount(source, options),
+      LandmarkVertexCount(target, options), naming);
+  }
+  return problem;
 }
 
 // The share of the job's progress before each stage, roughly its share of the time.
@@ -107,6 +141,7 @@ vtkMobiusRegistration::vtkMobiusRegistration()
   this->Candidate = defaults.Candidate;
   this->OutputGeometry = defaults.OutputGeometry;
   this->NumberOfThreads = defaults.NumberOfThreads;
+  this->LandmarkMode = defaults.LandmarkMode;
 }
 
 //------------------------------------------------------------------------------
@@ -145,7 +180,9 @@ std::string vtkMobiusRegistration::CheckParameters(int names)
   const mobius::ParameterNaming naming = names == PYTHON_NAMES ? mobius::ParameterNaming::Python
     : names == COMMAND_LINE_NAMES ? mobius::ParameterNaming::CommandLine
                                   : mobius::ParameterNaming::Filter;
-  return mobius::CheckRegistrationParameters(ParametersOf(this), naming);
+  // The landmarks' vertices are checked when the meshes are there.
+  return CheckOptions(ParametersOf(this), vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0)),
+    vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)), naming);
 }
 
 //------------------------------------------------------------------------------
@@ -169,7 +206,7 @@ int vtkMobiusRegistration::ComputeOutput(
   }
   const mobius::RegistrationParameters options = ParametersOf(this);
   const std::string outOfRange =
-    mobius::CheckRegistrationParameters(options, mobius::ParameterNaming::Filter);
+    CheckOptions(options, source, target, mobius::ParameterNaming::Filter);
   if (!outOfRange.empty())
   {
     vtkErrorMacro(<< outOfRange);
@@ -253,4 +290,5 @@ void vtkMobiusRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
   os << indent << "Candidate: " << this->Candidate << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
+  os << indent << "LandmarkMode: " << this->LandmarkMode << "\n";
 }

@@ -25,8 +25,19 @@
  * map turned by the rotational alignment (vtkSO3Register's output, with the source's point
  * arrays); port 2, the target's centered spherical map (vtkMobiusCenter's output).
  *
+ * Landmarks (AddLandmark): pairs of a source vertex and the target vertex it must go to,
+ * for shapes too symmetric or too different for the automatic map. Every stage keeps them:
+ * the rotational alignment chooses the transform that brings their sphere points together
+ * (LandmarkMode 0) or a Möbius transform makes 3 of them meet (LandmarkMode 1); the
+ * refinement maps each source landmark onto its target landmark and pins it in the polish.
+ * Field data `LandmarkCount` and `LandmarkResidual` (one value per landmark: the
+ * straight-line distance on the target between the image of the source landmark and the
+ * target landmark, over sqrt(target area)).
+ *
  * Errors: a mesh that cannot be mapped (the stage's message, naming the Source or the
- * Target), a degenerate conformal map unless AllowPoorMaps. Warnings: the stages'.
+ * Target), a degenerate conformal map unless AllowPoorMaps, a landmark naming a vertex the
+ * mesh does not have or that its repair removed, a vertex in two landmarks, LandmarkMode 1
+ * with fewer than 3 landmarks. Warnings: the stages'.
  *
  * Defaults are the core's (mobius::RegistrationParameters), the same as mobius-register's
  * and mobiusregistration.register()'s.
@@ -38,16 +49,16 @@
 #define vtkMobiusRegistration_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkMobiusThreadedPolyDataAlgorithm.h"
+#include "vtkMobiusLandmarkPolyDataAlgorithm.h"
 
 #include <string> // For the names
 
 class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkMobiusRegistration
-  : public vtkMobiusThreadedPolyDataAlgorithm
+  : public vtkMobiusLandmarkPolyDataAlgorithm
 {
 public:
   static vtkMobiusRegistration* New();
-  vtkTypeMacro(vtkMobiusRegistration, vtkMobiusThreadedPolyDataAlgorithm);
+  vtkTypeMacro(vtkMobiusRegistration, vtkMobiusLandmarkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -142,6 +153,24 @@ public:
   vtkGetMacro(Candidate, int);
   ///@}
 
+  // Landmarks (AddLandmark(sourceVertex, targetVertex), RemoveAllLandmarks,
+  // GetNumberOfLandmarks, from the base class): 0-based point ids of the two inputs, i.e. the
+  // files' vertex numbers (with InputsAreCenteredMaps, the maps' `InputPointId` values). A
+  // vertex the repair merged into a duplicate stands for that duplicate; one the repair
+  // removed is an error, and so is a vertex in two landmarks. None by default.
+
+  ///@{
+  /**
+   * How the landmarks steer the rotational alignment: 0 (default) the rotation search
+   * chooses among the correlation's transforms, and with 3 or more landmarks their best-fit
+   * rotation, the one that brings the landmarks' sphere points closest together; 1 a Möbius
+   * transform of the source's sphere makes the first 3 landmarks meet exactly, in place of
+   * the rotation (needs at least 3 landmarks).
+   */
+  vtkSetClampMacro(LandmarkMode, int, 0, 1);
+  vtkGetMacro(LandmarkMode, int);
+  ///@}
+
   ///@{
   /** Where the output's points are: 0 the target surface, 1 the source surface. */
   vtkSetMacro(OutputGeometry, int);
@@ -195,6 +224,7 @@ protected:
   bool GeometricPolish;
   int Candidate;
   int OutputGeometry;
+  int LandmarkMode;
 
 private:
   vtkMobiusRegistration(const vtkMobiusRegistration&) = delete;

@@ -1,5 +1,6 @@
 #include "vtkSO3Register.h"
 
+#include "LandmarkAlignment.h"
 #include "RegistrationParameters.h"
 #include "MirrorCheck.h"
 #include "ParallelFor.h"
@@ -47,6 +48,45 @@ std::array<double, 9> RowMajor(const Eigen::Matrix3d& matrix)
   return values;
 }
 
+// The landmarks' points on the two spheres (`ids`: point ids of the maps); the error if an
+// id is not a point of its map.
+std::string GatherLandmarks(const std::vector<std::pair<vtkIdType, vtkIdType>>& ids,
+  const mobius::Points& source, const mobius::Points& target, mobius::SphereLandmarks& landmarks)
+{
+  const auto count = static_cast<Eigen::Index>(ids.size());
+  landmarks.Source.resize(count, 3);
+  landmarks.Target.resize(count, 3);
+  for (Eigen::Index k = 0; k < count; ++k)
+  {
+    const vtkIdType points[2] = { ids[k].first, ids[k].second };
+    const mobius::Points* maps[2] = { &source, &target };
+    for (int side = 0; side < 2; ++side)
+    {
+      if (points[side] < 0 || points[side] >= maps[side]->rows())
+      {
+        return "landmark " + std::to_string(k) + " names point " + std::to_string(points[side]) +
+          " of the " + (side == 0 ? "Source" : "Target") + ", which has " +
+          std::to_string(maps[side]->rows()) + " points";
+      }
+    }
+    landmarks.Source.row(k) = source.row(points[0]);
+    landmarks.Target.row(k) = target.row(points[1]);
+  }
+  return {};
+}
+
+// The result's best transform and figures from its first candidate.
+void TakeFirstCandidate(mobius::SO3CorrelationResult& result)
+{
+  const mobius::SO3Candidate& best = result.Candidates.front();
+  result.Transform = best.Transform;
+  result.Determinant = best.Determinant;
+  result.EulerAngles = best.EulerAngles;
+  result.Score = best.Score;
+  result.RegistrationError = best.RegistrationError;
+  result.CorrelationCoefficient = best.CorrelationCoefficient;
+}
+
 void AddTupleArray(vtkFieldData* fieldData, const char* name, int components,
   const std::vector<std::vector<double>>& tuples)
 {
@@ -72,6 +112,7 @@ vtkSO3Register::vtkSO3Register()
   this->TransformMode = defaults.TransformMode;
   this->NumberOfCandidates = defaults.NumberOfCandidates;
   this->NumberOfThreads = defaults.NumberOfThreads;
+  this->LandmarkMode = defaults.LandmarkMode;
 }
 
 //------------------------------------------------------------------------------
@@ -146,7 +187,7 @@ int vtkSO3Register::ComputeOutput(
   parameters.SmoothingTime = this->SmoothingTime;
   parameters.Value = this->ValueMode == 0 ? mobius::ScaleFactorValue::AreaRatio
                                           : mobius::ScaleFactorValue::SquareRootAreaRatio;
-  mobius::Points sourcePoints;
+  mobius::Points sourcePoints, targetPoints;
   mobius::ScaleFactorSignal signals[2];
   vtkPolyData* inputs[2] = { source, target };
   const char* names[2] = { "Source", "Target" };
@@ -176,10 +217,23 @@ int vtkSO3Register::ComputeOutput(
                     << ".");
       return 0;
     }
-    if (k == 0)
-    {
-      sourcePoints.swap(points);
-    }
+    (k == 0 ? sourcePoints : targetPoints).swap(points);
+  }
+  mobius::SphereLandmarks landmarks;
+  const std::string landmarkError =
+    GatherLandmarks(this->Landmarks, sourcePoints, targetPoints, landmarks);
+  const bool fitMobius = this->LandmarkMode == 1;
+  if (landmarkError.empty() && fitMobius && landmarks.Source.rows() < mobius::FittedLandmarkCount)
+  {
+    vtkErrorMacro(<< "Cannot register: LandmarkMode 1 fits a Moebius transformation to "
+                  << mobius::FittedLandmarkCount << " landmarks, and there are "
+                  << landmarks.Source.rows() << ".");
+    return 0;
+  }
+  if (!landmarkError.empty())
+  {
+    vtkErrorMacro(<< "Cannot register: " << landmarkError << ".");
+    return 0;
   }
 
   mobius::SO3CorrelationOptions options;
@@ -192,7 +246,7 @@ int vtkSO3Register::ComputeOutput(
     this->UpdateProgress(0.5 + 0.45 * fraction);
     return !this->GetAbortExecute();
   };
-  const mobius::SO3CorrelationResult result =
+  mobius::SO3CorrelationResult result =
     mobius::CorrelateOverRotations(signals[0].Coefficients, signals[1].Coefficients, options);
   if (result.Aborted || this->GetAbortExecute())
   {
@@ -203,6 +257,34 @@ int vtkSO3Register::ComputeOutput(
   {
     vtkErrorMacro(<< "Cannot register: the correlation found no peak (are both signals zero?).");
     return 0;
+  }
+  std::vector<double> landmarkAngles;
+  if (fitMobius)
+  {
+    // The Möbius transformation takes the rotation's place: of the rotation only its kind
+    // (a reflection or not) is kept.
+    const bool reflect = this->TransformMode == REFLECTIONS ||
+      (this->TransformMode == ROTATIONS_AND_REFLECTIONS && result.Determinant < 0);
+    if (!mobius::MoveByLandmarkMobius(landmarks, reflect, sourcePoints))
+    {
+      vtkErrorMacro(<< "Cannot register: two of the first " << mobius::FittedLandmarkCount
+                    << " landmarks are at the same point of a sphere: no Moebius "
+                       "transformation sends them onto their targets.");
+      return 0;
+    }
+    const Eigen::Matrix3d kind = Eigen::Vector3d(1.0, reflect ? -1.0 : 1.0, 1.0).asDiagonal();
+    result.Candidates = { mobius::ScoreTransform(
+      signals[0].Coefficients, signals[1].Coefficients, kind, threads) };
+    TakeFirstCandidate(result);
+  }
+  else if (landmarks.Source.rows() > 0)
+  {
+    landmarkAngles = mobius::OrderCandidatesByLandmarks(result.Candidates, landmarks,
+      options.Reflections, [&](const Eigen::Matrix3d& transform) {
+        return mobius::ScoreTransform(
+          signals[0].Coefficients, signals[1].Coefficients, transform, threads);
+      });
+    TakeFirstCandidate(result);
   }
   mobius::MirrorCheck mirroring;
   if (this->CheckMirroring)
@@ -220,7 +302,7 @@ int vtkSO3Register::ComputeOutput(
   }
 
   output->ShallowCopy(source);
-  for (Eigen::Index i = 0; i < sourcePoints.rows(); ++i)
+  for (Eigen::Index i = 0; i < sourcePoints.rows() && !fitMobius; ++i)
   {
     sourcePoints.row(i) = (result.Transform * sourcePoints.row(i).transpose()).transpose();
   }
@@ -252,6 +334,15 @@ int vtkSO3Register::ComputeOutput(
   AddTupleArray(fieldData, "CandidateScores", 1, scores);
   AddTupleArray(fieldData, "CandidateRegistrationErrors", 1, errors);
   AddTupleArray(fieldData, "CandidateCorrelationCoefficients", 1, coefficients);
+  if (!landmarkAngles.empty())
+  {
+    std::vector<std::vector<double>> angles;
+    for (double angle : landmarkAngles)
+    {
+      angles.push_back({ angle });
+    }
+    AddTupleArray(fieldData, "CandidateLandmarkAngles", 1, angles);
+  }
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -266,4 +357,5 @@ void vtkSO3Register::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValueMode: " << this->ValueMode << "\n";
   os << indent << "TransformMode: " << this->TransformMode << "\n";
   os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "LandmarkMode: " << this->LandmarkMode << "\n";
 }

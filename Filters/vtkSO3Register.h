@@ -29,7 +29,19 @@
  * - `CandidateTransforms` (K tuples of 9), `CandidateScores`, `CandidateRegistrationErrors`,
  *   `CandidateCorrelationCoefficients` (K tuples each), best first;
  * - `Resolution`, `CorrelationBandwidth` (the bands used by the grid search);
- * - `NumberOfThreadsUsed`.
+ * - `NumberOfThreadsUsed`;
+ * - with landmarks, `CandidateLandmarkAngles` (per candidate, the root mean square angle in
+ *   radians between the landmarks' source points moved by it and their target points).
+ *
+ * Landmarks (AddLandmark, point ids of the two input maps): with LandmarkMode 0 (default)
+ * the candidates are put in the order of their landmark angles, the best first, and from 3
+ * landmarks on the landmarks' best-fit transform (of the kinds TransformMode allows, by
+ * orthogonal Procrustes) is a candidate too: 3 landmarks tell a symmetric shape from its
+ * mirror image or its half-turned copy, which correlate equally well. With LandmarkMode 1
+ * the source map is moved by the Möbius transformation that sends the first 3 landmarks
+ * exactly onto their targets (after a reflection with TransformMode REFLECTIONS, or when
+ * the correlation's best transform is one with ROTATIONS_AND_REFLECTIONS); `Rotation` and
+ * the only candidate are then the identity (or the reflection y -> -y).
  *
  * Errors: an input that is not a spherical map (or has a triangle referring to a point id
  * out of range), missing or invalid `SurfaceArea`, Resolution odd or below 4, a Resolution
@@ -41,14 +53,14 @@
 #define vtkSO3Register_h
 
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
-#include "vtkMobiusThreadedPolyDataAlgorithm.h"
+#include "vtkMobiusLandmarkPolyDataAlgorithm.h"
 
 class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSO3Register
-  : public vtkMobiusThreadedPolyDataAlgorithm
+  : public vtkMobiusLandmarkPolyDataAlgorithm
 {
 public:
   static vtkSO3Register* New();
-  vtkTypeMacro(vtkSO3Register, vtkMobiusThreadedPolyDataAlgorithm);
+  vtkTypeMacro(vtkSO3Register, vtkMobiusLandmarkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum TransformModes
@@ -144,6 +156,15 @@ public:
   vtkBooleanMacro(CheckMirroring, bool);
   ///@}
 
+  ///@{
+  /**
+   * What the landmarks do (see the class description): 0 (default) order the candidates by
+   * them, 1 fit a Möbius transformation to the first 3 (an error with fewer).
+   */
+  vtkSetClampMacro(LandmarkMode, int, 0, 1);
+  vtkGetMacro(LandmarkMode, int);
+  ///@}
+
 protected:
   vtkSO3Register();
   ~vtkSO3Register() override = default;
@@ -158,6 +179,7 @@ protected:
   int TransformMode;
   int NumberOfCandidates;
   bool CheckMirroring = true;
+  int LandmarkMode;
 
 private:
   vtkSO3Register(const vtkSO3Register&) = delete;

@@ -75,4 +75,14 @@ VertexLists VertexTriangles(Index numberOfPoints, const Triangles& triangles)
   }
   return Compress(numberOfPoints, pairs);
 }
+
+void PlaceAtVertex(const Triangles& triangles, const VertexLists& vertexTriangles, Index vertex,
+  Index& triangle, Eigen::Vector3d& barycentric)
+{
+  triangle = vertexTriangles.Items[vertexTriangles.Begin(vertex)];
+  for (int corner = 0; corner < 3; ++corner)
+  {
+    barycentric[corner] = triangles(triangle, corner) == vertex ? 1.0 : 0.0;
+  }
+}
 }

@@ -25,6 +25,11 @@ VertexLists VertexNeighbors(Index numberOfPoints, const Triangles& triangles);
 
 /// The triangles having each vertex as a corner.
 VertexLists VertexTriangles(Index numberOfPoints, const Triangles& triangles);
+
+/// The point at `vertex` itself as a triangle around it and barycentric coordinates (1 at
+/// that corner); `vertexTriangles` from VertexTriangles. The vertex must be in a triangle.
+void PlaceAtVertex(const Triangles& triangles, const VertexLists& vertexTriangles, Index vertex,
+  Index& triangle, Eigen::Vector3d& barycentric);
 }
 
 #endif

@@ -1,10 +1,12 @@
 #include "RefineCorrespondence.h"
 
+#include "LandmarkAlignment.h"
 #include "ParallelFor.h"
 #include "SurfacePolish.h"
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <chrono>
 
 namespace mobius
@@ -76,19 +78,66 @@ struct Candidates
 {
   std::vector<bool> Preserve;
   std::vector<SampleAnchor> Anchors;
+  /// false: the start leaves the landmarks far apart (kLandmarkAngleMargin), not kept.
+  std::vector<bool> NearLandmarks;
 };
+
+// The landmarks as pins of the source's samples: (position in Samples, target vertex).
+std::vector<std::pair<Index, Index>> SamplePins(
+  const SpectralSurface& source, const RegisteredSpheres& spheres)
+{
+  std::vector<std::pair<Index, Index>> pins;
+  for (const auto& landmark : spheres.Landmarks)
+  {
+    const auto found = std::find(source.Samples.begin(), source.Samples.end(), landmark.first);
+    if (found != source.Samples.end())
+    {
+      pins.emplace_back(static_cast<Index>(found - source.Samples.begin()), landmark.second);
+    }
+  }
+  return pins;
+}
+
+// Per start, whether it brings the landmarks' sphere points about as close together as the
+// best start does (all of them without landmarks).
+std::vector<bool> StartsNearLandmarks(const RegisteredSpheres& spheres)
+{
+  SphereLandmarks landmarks;
+  landmarks.Source.resize(static_cast<Eigen::Index>(spheres.Landmarks.size()), 3);
+  landmarks.Target.resize(landmarks.Source.rows(), 3);
+  for (size_t k = 0; k < spheres.Landmarks.size(); ++k)
+  {
+    landmarks.Source.row(static_cast<Eigen::Index>(k)) = spheres.Source.row(spheres.Landmarks[k].first);
+    landmarks.Target.row(static_cast<Eigen::Index>(k)) = spheres.Target.row(spheres.Landmarks[k].second);
+  }
+  std::vector<double> angles;
+  for (const RotationMatrix& start : spheres.Starts)
+  {
+    angles.push_back(LandmarkAngle(start, landmarks));
+  }
+  const double best = *std::min_element(angles.begin(), angles.end());
+  std::vector<bool> near;
+  for (double angle : angles)
+  {
+    near.push_back(angle <= best + kLandmarkAngleMargin);
+  }
+  return near;
+}
 
 Candidates SetUpCandidates(const SpectralSurface& source, const SpectralSurface& target,
   const RegisteredSpheres& spheres, const CorrespondenceRefinementOptions& options)
 {
   Candidates candidates;
   const double bestDeterminant = spheres.BestReflects ? -1.0 : 1.0;
+  const std::vector<std::pair<Index, Index>> pins = SamplePins(source, spheres);
   for (const RotationMatrix& start : spheres.Starts)
   {
     candidates.Preserve.push_back(start.determinant() * bestDeterminant > 0);
     candidates.Anchors.push_back(
       SphereAnchor(start, source.Samples, target.Samples, spheres, options.SphereAnchorWeight));
+    candidates.Anchors.back().Pins = pins;
   }
+  candidates.NearLandmarks = StartsNearLandmarks(spheres);
   return candidates;
 }
 
@@ -136,7 +185,8 @@ SampleMap FinishKeptMap(const SpectralSurface& source, const SpectralSurface& ta
 
 // The dense map moved on the surfaces (SurfacePolish); the error if the polish failed.
 std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
-  const SampleMap& kept, int numberOfThreads, DenseMap& dense)
+  const SampleMap& kept, int numberOfThreads, const std::vector<std::pair<Index, Index>>& pinned,
+  DenseMap& dense)
 {
   // On the scaled surfaces the spectral bases were computed on: the polish scales the
   // source to the target's area itself, and the map is triangles and barycentrics.
@@ -145,6 +195,7 @@ std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface&
   // A mirror image (an orientation-reversing map: a reflection's, or a symmetry's) is
   // polished as a rotation of the mirrored source.
   polish.ReverseOrientation = kept.OrientationAgreement < 0.5;
+  polish.Pinned = pinned;
   SurfacePolishInfo info;
   const bool polished = PolishSurfaceMap(source.Positions, source.Faces, target.Positions,
     target.Faces, target.Corners, dense.Triangle, dense.Barycentric, polish, info);
@@ -165,11 +216,17 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
     refined.Stopped = true;
     return refined;
   }
-  // The one of the expected orientation that keeps the curvature best goes on.
-  std::vector<bool> rightSide;
+  // The one of the expected orientation (near the landmarks) that keeps the curvature best
+  // goes on.
+  std::vector<bool> oriented, rightSide;
   for (size_t c = 0; c < refined.Screened.size(); ++c)
   {
-    rightSide.push_back(HasOrientation(refined.Screened[c], candidates.Preserve[c]));
+    oriented.push_back(HasOrientation(refined.Screened[c], candidates.Preserve[c]));
+    rightSide.push_back(oriented.back() && candidates.NearLandmarks[c]);
+  }
+  if (std::find(rightSide.begin(), rightSide.end(), true) == rightSide.end())
+  {
+    rightSide = candidates.NearLandmarks; // none of both: near the landmarks, repaired below
   }
   refined.Choice = ChooseCandidate(refined.Screened, rightSide, target, options.Criterion);
   if (options.Candidate >= 0)
@@ -177,7 +234,7 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
     refined.Choice.Kept = options.Candidate;
   }
   const int kept = refined.Choice.Kept;
-  refined.WrongOrientation = !rightSide[kept];
+  refined.WrongOrientation = !oriented[kept];
   ZoomOutParameters parameters = options.ZoomOut;
   refined.Kept = FinishKeptMap(source, target, refined, candidates.Preserve[kept],
     candidates.Anchors[kept], options, parameters);
@@ -186,12 +243,13 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
   {
     options.Progress(0.85); // the extension is not stopped
   }
-  refined.Dense = ExtendToAllVertices(source, target, refined.Kept, parameters);
+  refined.Dense =
+    ExtendToAllVertices(source, target, refined.Kept, parameters, spheres.Landmarks);
   refined.ExtensionSeconds = stopwatch.Lap();
   if (options.GeometricPolish)
   {
-    refined.PolishError = PolishDenseMap(
-      source, target, refined.Kept, options.ZoomOut.NumberOfThreads, refined.Dense);
+    refined.PolishError = PolishDenseMap(source, target, refined.Kept,
+      options.ZoomOut.NumberOfThreads, spheres.Landmarks, refined.Dense);
     refined.PolishSeconds = stopwatch.Lap();
   }
   return refined;

@@ -31,7 +31,18 @@ struct RegisteredSpheres
   const std::vector<RotationMatrix>& Starts;
   /// The best transform reverses orientation (a reflection): its candidates' maps should too.
   bool BestReflects;
+  /// Landmarks: (source vertex, target vertex), each source vertex one of the source's
+  /// samples (AddPinnedSamples). Every candidate maps them onto their target vertices, the
+  /// candidates whose starts bring them much farther apart on the sphere than the best one
+  /// (kLandmarkAngleMargin) are not kept, and the polish holds them.
+  std::vector<std::pair<Index, Index>> Landmarks = {};
 };
+
+/// A candidate whose start leaves the landmarks this much farther apart on the sphere (root
+/// mean square angle, radians) than the closest start is not kept: about 20 degrees, far
+/// less than a mirror image or a half turn moves them, more than the correlation's
+/// candidates near one another differ.
+constexpr double kLandmarkAngleMargin = 0.35;
 
 /// No defaults here: RegistrationParameters holds them.
 struct CorrespondenceRefinementOptions

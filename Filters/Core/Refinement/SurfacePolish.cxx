@@ -252,6 +252,10 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
   {
     system.coeffRef(i, i) += pull * area[i];
   }
+  for (const auto& pin : parameters.Pinned)
+  {
+    system.coeffRef(pin.first, pin.first) += parameters.PinWeight * parameters.Fit * area[pin.first];
+  }
   SparseCholesky cholesky;
   if (!cholesky.Analyze(system) || !cholesky.Factorize(system))
   {
@@ -328,6 +332,11 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
           (parameters.Fit * closest + parameters.Anchor * spectral.row(i).transpose()).transpose();
       }
     });
+    for (const auto& pin : parameters.Pinned)
+    {
+      rhs.row(pin.first) += parameters.PinWeight * parameters.Fit * area[pin.first] *
+        targetPoints.row(pin.second);
+    }
     // ARAP global step's right-hand side: sum_j w_ij (R_i + R_j) / 2 (x_i - x_j).
     ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
       for (Index i = begin; i < end; ++i)
@@ -366,6 +375,12 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
       }
     }
   });
+  // A landmark ends on its target vertex itself, a corner of a triangle around it.
+  for (const auto& pin : parameters.Pinned)
+  {
+    PlaceAtVertex(targetTriangles, targetVertexTriangles, pin.second, triangle[pin.first],
+      barycentric[pin.first]);
+  }
   const Index rejected = std::count(trusted.begin(), trusted.end(), 0);
   const Index keptSpectral = std::count(kept.begin(), kept.end(), 1);
   info.Rejected = rejected;

@@ -36,6 +36,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mobius
@@ -63,6 +64,10 @@ struct SurfacePolishParameters
   /// The map reverses orientation (a mirror image, e.g. a bilateral self-map): the source
   /// is mirrored first, so that rotations can follow it.
   bool ReverseOrientation = false;
+  /// Landmarks (source vertex, target vertex): each source vertex is pulled onto its target
+  /// vertex PinWeight times as hard as onto a closest point, and ends there exactly.
+  std::vector<std::pair<Index, Index>> Pinned;
+  double PinWeight = 100.0;
   int NumberOfThreads = 0; ///< 0: one per core
 };
 

@@ -41,11 +41,29 @@ RowMatrix Anchored(const RowMatrix& rows, const RowMatrix& anchor, double weight
 }
 
 // Least-squares C with A C ~ B (A, B: samples x k): the functional map of a sample map.
-// Farthest-point samples are spread evenly, so equal weights stand in for the mass.
-Eigen::MatrixXd FitFunctionalMap(const RowMatrix& a, const RowMatrix& b)
+// Farthest-point samples are spread evenly, so equal weights stand in for the mass; a
+// pinned sample (a landmark) counts kPinnedSampleWeight times.
+Eigen::MatrixXd FitFunctionalMap(const RowMatrix& a, const RowMatrix& b,
+  const std::vector<std::pair<Index, Index>>& pins = {})
 {
-  const Eigen::MatrixXd normal = a.transpose() * a;
-  return normal.ldlt().solve(a.transpose() * b);
+  Eigen::MatrixXd normal = a.transpose() * a;
+  Eigen::MatrixXd right = a.transpose() * b;
+  for (const auto& pin : pins)
+  {
+    const double extra = kPinnedSampleWeight - 1.0;
+    normal += extra * a.row(pin.first).transpose() * a.row(pin.first);
+    right += extra * a.row(pin.first).transpose() * b.row(pin.first);
+  }
+  return normal.ldlt().solve(right);
+}
+
+// The pinned samples sent to their target vertices.
+void ApplyPins(const std::vector<std::pair<Index, Index>>& pins, std::vector<Index>& targetVertex)
+{
+  for (const auto& pin : pins)
+  {
+    targetVertex[static_cast<size_t>(pin.first)] = pin.second;
+  }
 }
 }
 
@@ -92,6 +110,22 @@ double CurvatureDifference(const SpectralSurface& source, const SpectralSurface&
     sum += std::abs(source.Curvature[source.Samples[s]] - target.Curvature[targetVertex[s]]);
   }
   return sum / static_cast<double>(targetVertex.size());
+}
+
+std::vector<Index> AddPinnedSamples(SpectralSurface& surface, const std::vector<Index>& vertices)
+{
+  std::vector<Index> positions;
+  for (Index vertex : vertices)
+  {
+    const auto found = std::find(surface.Samples.begin(), surface.Samples.end(), vertex);
+    positions.push_back(static_cast<Index>(found - surface.Samples.begin()));
+    if (found == surface.Samples.end())
+    {
+      surface.Samples.push_back(vertex);
+    }
+    surface.SampleLabels[static_cast<size_t>(vertex)] = positions.back();
+  }
+  return positions;
 }
 
 int NextBasisSize(int size, double growth)
@@ -217,13 +251,14 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
 
   SampleMap result;
   result.TargetVertex = initialTargetVertex;
+  ApplyPins(anchor.Pins, result.TargetVertex);
   int orientationTries = 0;
   for (int k = std::min(parameters.StartSize, finalSize);;
        k = std::min(NextBasisSize(k, parameters.Growth), finalSize))
   {
     const RowMatrix a = sourceRows.leftCols(k);
     const Eigen::MatrixXd c =
-      FitFunctionalMap(a, GatherRows(target.Embedding, result.TargetVertex, k));
+      FitFunctionalMap(a, GatherRows(target.Embedding, result.TargetVertex, k), anchor.Pins);
     // Row i of Phi_S ~ row T(i) of Phi_T C^T: transform the target side, as ZoomOut does
     // (for an orthogonal C the same as comparing Phi_S C with Phi_T; for the shrunk C of a
     // noisy start it keeps the queries from collapsing onto the target's small rows).
@@ -245,13 +280,14 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     {
       ++orientationTries;
     }
+    ApplyPins(anchor.Pins, result.TargetVertex);
     if (k == finalSize)
     {
       break;
     }
   }
-  result.FunctionalMap =
-    FitFunctionalMap(sourceRows, GatherRows(target.Embedding, result.TargetVertex, finalSize));
+  result.FunctionalMap = FitFunctionalMap(
+    sourceRows, GatherRows(target.Embedding, result.TargetVertex, finalSize), anchor.Pins);
   result.OrthogonalityResidual = OrthogonalityResidual(result.FunctionalMap);
   std::vector<char> hit(static_cast<size_t>(target.Embedding.rows()), 0);
   for (Index v : result.TargetVertex)
@@ -293,7 +329,7 @@ SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface
   const int k = std::min<int>(flips + 1, static_cast<int>(reversed.FunctionalMap.rows()));
   // The reversed map's functional map on the first k functions, refitted from its samples.
   const Eigen::MatrixXd low = FitFunctionalMap(GatherRows(source.Embedding, source.Samples, k),
-    GatherRows(target.Embedding, reversed.TargetVertex, k));
+    GatherRows(target.Embedding, reversed.TargetVertex, k), anchor.Pins);
   ZoomOutParameters continued = parameters;
   continued.StartSize = NextBasisSize(k, parameters.Growth);
   SampleMap best = reversed;
@@ -316,7 +352,8 @@ SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface
 }
 
 DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurface& target,
-  const SampleMap& samples, const ZoomOutParameters& parameters)
+  const SampleMap& samples, const ZoomOutParameters& parameters,
+  const std::vector<std::pair<Index, Index>>& pinned)
 {
   const Index n = source.Embedding.rows();
   const Eigen::Index k = samples.FunctionalMap.cols();
@@ -336,6 +373,7 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
         sourceEmbedding.row(i), transformedTarget, target.Neighbors, start);
     }
   });
+  ApplyPins(pinned, result.NearestVertex);
 
   for (int iteration = 0; iteration < parameters.FullResolutionIterations; ++iteration)
   {
@@ -350,6 +388,7 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
           transformedTarget, target.Neighbors, result.NearestVertex[i]);
       }
     });
+    ApplyPins(pinned, result.NearestVertex);
   }
   result.FunctionalMap = sourceEmbedding.transpose() *
     (source.Mass * GatherRows(targetEmbedding, result.NearestVertex, static_cast<int>(k)));
@@ -364,6 +403,13 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
         result.NearestVertex[i], result.Triangle[i], result.Barycentric[i]);
     }
   });
+  // A landmark lands on its target vertex itself, a corner of a triangle around it.
+  for (const auto& pin : pinned)
+  {
+    PlaceAtVertex(target.Faces, target.Corners, pin.second,
+      result.Triangle[static_cast<size_t>(pin.first)],
+      result.Barycentric[static_cast<size_t>(pin.first)]);
+  }
   return result;
 }
 }

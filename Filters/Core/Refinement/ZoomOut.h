@@ -18,6 +18,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mobius
@@ -109,7 +110,20 @@ struct SampleAnchor
   RowMatrix Source; ///< row s: source sample s
   RowMatrix Target; ///< row t: target sample t
   double Weight = 0; ///< 0: no anchor
+  /// Landmarks: (position in the source's Samples, target vertex). Each pinned sample maps
+  /// to its target vertex in every iteration (a hard constraint of the pointwise step), and
+  /// counts kPinnedSampleWeight times in the fit of the functional map.
+  std::vector<std::pair<Index, Index>> Pins;
 };
+
+/// How many ordinary samples a landmark weighs in the functional map's fit: enough for a few
+/// landmarks to steer the low frequencies against a thousand samples that follow a wrong
+/// start, not so much that an imprecise landmark bends the whole map.
+constexpr double kPinnedSampleWeight = 20.0;
+
+/// Adds `vertices` (landmarks) to the surface's samples where they are not samples yet, and
+/// makes each the nearest sample of its own vertex; returns each one's position in Samples.
+std::vector<Index> AddPinnedSamples(SpectralSurface& surface, const std::vector<Index>& vertices);
 
 /// ZoomOut from `initialTargetVertex` (one target vertex per source sample, e.g. read off
 /// the Möbius map) on the samples of both surfaces.
@@ -175,8 +189,10 @@ struct DenseMap
 /// nearest sample and descends on the target mesh to the vertex nearest in the embedding;
 /// `FullResolutionIterations` ZoomOut steps at full size follow; each point is finally
 /// projected onto the target triangles around its vertex.
+/// `pinned` (source vertex, target vertex): landmarks, mapped onto their target vertices.
 DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurface& target,
-  const SampleMap& samples, const ZoomOutParameters& parameters);
+  const SampleMap& samples, const ZoomOutParameters& parameters,
+  const std::vector<std::pair<Index, Index>>& pinned = {});
 
 /// The basis size after `size` in the schedule: size + max(1, floor(size x growth)).
 int NextBasisSize(int size, double growth);

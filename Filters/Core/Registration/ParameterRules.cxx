@@ -70,6 +70,47 @@ Rule NumberRule(ParameterNames names, double RegistrationParameters::*member, Nu
 }
 
 const ParameterNames CandidatesNames{ "NumberOfCandidates", "candidates", "--candidates" };
+const ParameterNames LandmarksNames{ "Landmarks", "landmarks", "--landmarks" };
+
+// Landmark number `k` as the interface shows it: "landmark 2" (filter), "landmarks[2]"
+// (Python), "line 7" of the file or "pair 2" (command line).
+std::string LandmarkName(const RegistrationParameters& p, size_t k, ParameterNaming naming)
+{
+  switch (naming)
+  {
+    case ParameterNaming::Python:
+      return "landmarks[" + Text(k) + "]";
+    case ParameterNaming::CommandLine:
+      return p.Landmarks[k].Line > 0 ? "line " + Text(p.Landmarks[k].Line) : "pair " + Text(k);
+    case ParameterNaming::Filter:
+      break;
+  }
+  return "landmark " + Text(k);
+}
+
+// The first vertex given twice on one side ("source vertex 5 in landmark 0 and landmark 2");
+// empty if none is. Two source vertices sent to one target vertex fold the map, and one
+// source vertex sent to two places cannot be kept.
+std::string RepeatedLandmarkVertex(const RegistrationParameters& p, ParameterNaming naming)
+{
+  for (size_t k = 0; k < p.Landmarks.size(); ++k)
+  {
+    for (size_t j = 0; j < k; ++j)
+    {
+      const char* side = p.Landmarks[j].Source == p.Landmarks[k].Source ? "source"
+        : p.Landmarks[j].Target == p.Landmarks[k].Target                 ? "target"
+                                                                          : nullptr;
+      if (side)
+      {
+        const Index vertex =
+          side[0] == 's' ? p.Landmarks[k].Source : p.Landmarks[k].Target;
+        return std::string(side) + " vertex " + Text(vertex) + " in " +
+          LandmarkName(p, j, naming) + " and " + LandmarkName(p, k, naming);
+      }
+    }
+  }
+  return {};
+}
 
 const std::vector<Rule>& Rules()
 {
@@ -116,6 +157,30 @@ const std::vector<Rule>& Rules()
       &RegistrationParameters::OutputGeometry, { 0, 1 }),
     IntegerRule({ "NumberOfThreads", "threads", "--threads" },
       &RegistrationParameters::NumberOfThreads, ThreadCountRange),
+    // Fitting a Möbius transform needs its 3 points; choosing a rotation works with any.
+    { { "LandmarkMode", "landmark_mode", "--landmark-mode" },
+      [](const RegistrationParameters& p) {
+        return p.LandmarkMode == static_cast<int>(LandmarkMode::ChooseRotation) ||
+          (p.LandmarkMode == static_cast<int>(LandmarkMode::FitMobius) &&
+            p.Landmarks.size() >= static_cast<size_t>(FittedLandmarkCount));
+      },
+      [](const RegistrationParameters&, ParameterNaming naming) {
+        return "0 (the rotation search chooses by the landmarks) or 1 (a Moebius transform "
+               "fitted to " +
+          Text(FittedLandmarkCount) + " landmarks, which needs at least " +
+          Text(FittedLandmarkCount) + " " + LandmarksNames.In(naming) + ")";
+      },
+      [](const RegistrationParameters& p) {
+        return Text(p.LandmarkMode) + " with " + Text(p.Landmarks.size()) + " landmarks";
+      } },
+    { LandmarksNames,
+      [](const RegistrationParameters& p) {
+        return RepeatedLandmarkVertex(p, ParameterNaming::Filter).empty();
+      },
+      [](const RegistrationParameters&, ParameterNaming) {
+        return std::string("pairs of distinct source vertices and distinct target vertices");
+      },
+      nullptr },
   };
   return rules;
 }
@@ -132,7 +197,9 @@ std::string CheckRegistrationParameters(
     }
     const std::string name = rule.Names.In(naming);
     const std::string requirement = rule.Requirement(parameters, naming);
-    const std::string value = rule.Value(parameters);
+    // A rule about a list names the offending entry in the interface's words.
+    const std::string value = rule.Value ? rule.Value(parameters)
+                                         : RepeatedLandmarkVertex(parameters, naming) + " (given twice)";
     switch (naming)
     {
       case ParameterNaming::CommandLine:
@@ -143,6 +210,40 @@ std::string CheckRegistrationParameters(
         break;
     }
     return name + " must be " + requirement + " (it is " + value + ")";
+  }
+  return {};
+}
+
+std::string CheckLandmarkVertices(const RegistrationParameters& parameters, Index sourceVertices,
+  Index targetVertices, ParameterNaming naming)
+{
+  const Index counts[2] = { sourceVertices, targetVertices };
+  const char* sides[2] = { "source", "target" };
+  for (size_t k = 0; k < parameters.Landmarks.size(); ++k)
+  {
+    const Index vertices[2] = { parameters.Landmarks[k].Source, parameters.Landmarks[k].Target };
+    for (int side = 0; side < 2; ++side)
+    {
+      if (vertices[side] >= 0 && vertices[side] < counts[side])
+      {
+        continue;
+      }
+      const std::string where = LandmarkName(parameters, k, naming);
+      const std::string range = "the " + std::string(sides[side]) + " mesh has " +
+        Text(counts[side]) + " vertices, numbered from 0 to " + Text(counts[side] - 1);
+      const std::string vertex = std::string(sides[side]) + " vertex " + Text(vertices[side]);
+      switch (naming)
+      {
+        case ParameterNaming::CommandLine:
+          return LandmarksNames.CommandLine + std::string(" ") + where + ": no " + vertex + ": " +
+            range;
+        case ParameterNaming::Python:
+          return where + " names " + vertex + ", which does not exist: " + range;
+        case ParameterNaming::Filter:
+          break;
+      }
+      return "Landmarks: " + where + " names " + vertex + ", which does not exist: " + range;
+    }
   }
   return {};
 }

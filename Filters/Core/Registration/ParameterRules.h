@@ -28,6 +28,14 @@ enum class ParameterNaming
 /// parameter is allowed. The memory a Resolution needs is the registration's to check.
 std::string CheckRegistrationParameters(
   const RegistrationParameters& parameters, ParameterNaming naming);
+
+/// The first landmark that names a vertex the meshes do not have (the source has
+/// `sourceVertices` vertices, the target `targetVertices`), e.g. "landmarks[2] names source
+/// vertex 5000, which does not exist: the source mesh has 4000 vertices, numbered from 0 to
+/// 3999" (Python); empty when every landmark names existing vertices. Checked once the
+/// meshes are read; the rest of the landmarks' rules are CheckRegistrationParameters'.
+std::string CheckLandmarkVertices(const RegistrationParameters& parameters, Index sourceVertices,
+  Index targetVertices, ParameterNaming naming);
 }
 
 #endif

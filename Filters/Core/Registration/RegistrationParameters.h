@@ -16,6 +16,8 @@
 #include "ScaleFactorSignal.h"
 #include "ZoomOut.h"
 
+#include <vector>
+
 namespace mobius
 {
 /// Allowed values of an integer parameter, both ends included.
@@ -59,6 +61,31 @@ inline constexpr double MinimumFlowTolerance = 1e-8;
 /// A relative change above 1 is no tolerance.
 inline constexpr NumberRange FlowToleranceRange{ MinimumFlowTolerance, 1.0 };
 
+/// A point whose image the user knows: a source vertex and the target vertex it goes to,
+/// as the meshes' 0-based vertex numbers (the files' numbers, `InputPointId`).
+struct Landmark
+{
+  Index Source = 0;
+  Index Target = 0;
+  /// Where the user gave it, for messages: a file's line number (0: not from a file).
+  int Line = 0;
+};
+
+/// How the landmarks steer the registration (RegistrationParameters::LandmarkMode).
+enum class LandmarkMode
+{
+  /// The rotation search chooses among the correlation's transforms (and, with 3 or more,
+  /// the landmarks' best-fit rotation) the one that brings the landmarks' sphere points
+  /// closest together.
+  ChooseRotation = 0,
+  /// A Möbius transform of the source's sphere makes 3 landmarks meet their targets exactly
+  /// on the sphere, and takes the place of the rotation.
+  FitMobius = 1
+};
+inline constexpr IntegerRange LandmarkModeRange{ 0, 1 };
+/// A Möbius transform of the sphere is fixed by 3 points and their images.
+inline constexpr int FittedLandmarkCount = 3;
+
 struct RegistrationParameters
 {
   /// The inputs are centered spherical maps already (vtkMobiusCenter outputs, e.g. a
@@ -93,6 +120,9 @@ struct RegistrationParameters
   int ScreeningBasisSize = 30;
   bool GeometricPolish = true; ///< the refinement's geometric polish
   int Candidate = -1;          ///< the refinement's candidate to keep (-1: it chooses)
+  /// Points whose images the user knows: every stage keeps them (none by default).
+  std::vector<Landmark> Landmarks;
+  int LandmarkMode = static_cast<int>(mobius::LandmarkMode::ChooseRotation);
   /// Threads of every threaded stage (0: automatic, one per core of the CPU affinity mask,
   /// at most VTK_SMP_MAX_THREADS); the results do not depend on it.
   int NumberOfThreads = 0;

@@ -827,6 +827,43 @@ void EvaluateCorrelationSamples(const SphericalHarmonicCoefficients& source,
   }
 }
 
+SO3Candidate ScoredCandidate(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, const Eigen::Matrix3d& transform, double score)
+{
+  SO3Candidate candidate;
+  candidate.Determinant = transform.determinant() < 0 ? -1.0 : 1.0;
+  candidate.Transform = transform;
+  candidate.EulerAngles = MatrixToEulerZYZ(candidate.Determinant * transform);
+  candidate.Score = score;
+  const double sourceEnergy = Energy(source), targetEnergy = Energy(target);
+  const double energySum = sourceEnergy + targetEnergy;
+  // The constant band (Y_00 is invariant under every orthogonal T) contributes f_00 g_00 to
+  // C(T) and |f_00|^2, |g_00|^2 to the energies; without it, the mean-free signals.
+  const bool both = source.Bandwidth > 0 && target.Bandwidth > 0;
+  const double constantProduct = both ? std::real(source(0, 0) * std::conj(target(0, 0))) : 0.0;
+  const double meanFreeNorms = both
+    ? std::sqrt(std::max(0.0, sourceEnergy - std::norm(source(0, 0))) *
+        std::max(0.0, targetEnergy - std::norm(target(0, 0))))
+    : 0.0;
+  candidate.RegistrationError = energySum > 0 ? (energySum - 2.0 * score) / energySum : 0.0;
+  candidate.CorrelationCoefficient = meanFreeNorms > 0
+    ? std::max(-1.0, std::min(1.0, (score - constantProduct) / meanFreeNorms))
+    : 0.0;
+  return candidate;
+}
+
+SO3Candidate ScoreTransform(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, const Eigen::Matrix3d& transform,
+  int numberOfThreads)
+{
+  std::vector<SO3CorrelationSample> samples(1);
+  samples[0].ReflectSource = transform.determinant() < 0;
+  samples[0].EulerAngles =
+    MatrixToEulerZYZ(samples[0].ReflectSource ? Eigen::Matrix3d(-transform) : transform);
+  EvaluateCorrelationSamples(source, target, samples, 0, numberOfThreads);
+  return ScoredCandidate(source, target, transform, samples[0].Value);
+}
+
 SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients& source,
   const SphericalHarmonicCoefficients& target, const SO3CorrelationOptions& options)
 {
@@ -839,16 +876,6 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
   result.CorrelationBandwidth = bandwidth;
   result.GridResolution = 2 * bandwidth;
   result.RefinementBandwidth = bandwidth;
-  const double energySum = result.SourceEnergy + result.TargetEnergy;
-  // The constant band (Y_00 is invariant under every orthogonal T) contributes f_00 g_00 to
-  // C(T) and |f_00|^2, |g_00|^2 to the energies; without it, the mean-free signals.
-  const double constantProduct = source.Bandwidth > 0 && target.Bandwidth > 0
-    ? std::real(source(0, 0) * std::conj(target(0, 0)))
-    : 0.0;
-  const double meanFreeNorms = source.Bandwidth > 0 && target.Bandwidth > 0
-    ? std::sqrt(std::max(0.0, result.SourceEnergy - std::norm(source(0, 0))) *
-        std::max(0.0, result.TargetEnergy - std::norm(target(0, 0))))
-    : 0.0;
   const int wanted = std::max(1, options.NumberOfCandidates);
   const int refinementBandwidth =
     std::max(bandwidth, ChooseRefinementBandwidth(source, target, options.RefinementTolerance));
@@ -899,18 +926,9 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
   peaks = SelectSeparated(peaks, options.MinimumCandidateSeparation, wanted);
   for (const Peak& peak : peaks)
   {
-    SO3Candidate candidate;
-    const Eigen::Matrix3d rotation = PeakRotation(peak);
-    candidate.Determinant = peak.Reflect ? -1.0 : 1.0;
-    candidate.Transform = candidate.Determinant * rotation;
-    candidate.EulerAngles = MatrixToEulerZYZ(rotation);
-    candidate.Score = peak.Score;
-    candidate.RegistrationError =
-      energySum > 0 ? (energySum - 2.0 * peak.Score) / energySum : 0.0;
-    candidate.CorrelationCoefficient = meanFreeNorms > 0
-      ? std::max(-1.0, std::min(1.0, (peak.Score - constantProduct) / meanFreeNorms))
-      : 0.0;
-    result.Candidates.push_back(candidate);
+    const double determinant = peak.Reflect ? -1.0 : 1.0;
+    result.Candidates.push_back(
+      ScoredCandidate(source, target, determinant * PeakRotation(peak), peak.Score));
   }
   if (!result.Candidates.empty())
   {

@@ -112,6 +112,17 @@ struct SO3CorrelationResult
 SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients& source,
   const SphericalHarmonicCoefficients& target, const SO3CorrelationOptions& options = {});
 
+/// A candidate for the orthogonal `transform` whose correlation is `score`: its Euler
+/// angles, registration error and correlation coefficient.
+SO3Candidate ScoredCandidate(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, const Eigen::Matrix3d& transform, double score);
+
+/// The candidate of any orthogonal `transform`, its correlation evaluated over every band
+/// both inputs have (EvaluateCorrelationSamples).
+SO3Candidate ScoreTransform(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, const Eigen::Matrix3d& transform,
+  int numberOfThreads = 0);
+
 /// B' from the tail bound described at SO3CorrelationOptions::BandwidthTolerance, clamped to
 /// [min(minimum, B), maximum or B] and rounded up to a size whose FFTs are fast (2^a 3^b 5^c).
 int ChooseCorrelationBandwidth(const SphericalHarmonicCoefficients& source,
