@@ -220,6 +220,11 @@ def add_landmark_pair():
     picks = {side: pick(registration, side) for side in SIDES}
     for index, side in enumerate(SIDES):
         side_ids = [pair[index] for pair in committed]
+        if picks[side] in side_ids:
+            # The filter refuses a vertex in two landmarks: say so now, naming the landmark.
+            raise LandmarkError(
+                f"Add Landmark Pair: {side} point {picks[side]} is landmark "
+                f"{side_ids.index(picks[side]) + 1}'s already; select another point")
         if picks[side] is None:
             picks[side] = pending_pick(stored[side], side_ids)
     if picks["source"] is not None and picks["target"] is not None:
