@@ -126,7 +126,10 @@ def landmark_ids(registration, side):
         return ids
     ids = IDSelectionSource(registrationName=name, FieldType="POINT", IDs=[])
     points = ExtractSelection(registrationName=f"Landmarks on {side} of {proxy_name(registration)}",
-                              Input=input_mesh(registration, side), Selection=ids)
+                              Input=input_mesh(registration, side))
+    # Set after creation: a new ExtractSelection takes its input's current selection (the
+    # user's pick, when there is one) in place of the one given at creation.
+    points.Selection = ids
     # ExtractSelection's vtkOriginalPointIds, under a name of their own, for the colors.
     numbered = Calculator(registrationName=f"Landmark point ids on {side} of {proxy_name(registration)}",
                           Input=points, ResultArrayName=LANDMARK_ARRAY, Function="vtkOriginalPointIds")

@@ -10,8 +10,8 @@ import numpy as np
 
 from paraview import servermanager
 from paraview.simple import (
-    GetActiveSource, GetLayouts, LoadPlugin, OpenDataFile, Render, SelectIDs, SetActiveSource,
-    SetActiveView)
+    GetActiveSource, GetLayouts, GetViews, LoadPlugin, OpenDataFile, Render, SelectIDs,
+    SetActiveSource, SetActiveView)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 env = os.environ
@@ -34,19 +34,25 @@ def landmarks(mesh):
     return chosen
 
 
-for source_id, target_id in zip(landmarks(source), landmarks(target)):
-    SelectIDs(IDs=[0, source_id], FieldType="POINT", Source=source)
-    SelectIDs(IDs=[0, target_id], FieldType="POINT", Source=target)
+
+def macro():
     exec(open(env["MOBIUS_LANDMARK_MACRO"]).read(), dict(globals()))
+
+
+macro()  # nothing selected yet: the landmarks' tab, source and target side by side
+layout = [layout for (name, _), layout in GetLayouts().items() if name.startswith("Mobius landmarks")][0]
+views = [servermanager._getPyProxy(layout.GetView(cell)) for cell in (1, 2)]
+meshes = (registration.Source, registration.Target)  # as shown in the tab
+for source_id, target_id in zip(landmarks(source), landmarks(target)):
+    # Each pick in the view that shows the mesh, as Select Points On makes it.
+    for view, mesh, point_id in zip(views, meshes, (source_id, target_id)):
+        SetActiveView(view)
+        SelectIDs(IDs=[0, point_id], FieldType="POINT", Source=mesh)
+        macro()
 registration.UpdatePipeline()  # Apply
-for (name, _), layout in GetLayouts().items():
-    if name.startswith("Mobius"):
-        for cell in range(7):
-            view = layout.GetView(cell)
-            if view is not None:
-                Render(servermanager._getPyProxy(view))
-landmark_layout = [layout for (name, _), layout in GetLayouts().items() if name.startswith("Mobius landmarks")][0]
-SetActiveView(servermanager._getPyProxy(landmark_layout.GetView(1)))
+for view in GetViews():
+    Render(view)
+SetActiveView(views[0])
 SetActiveSource(registration)
 fields = servermanager.Fetch(registration).GetFieldData()
 residuals = fields.GetArray("LandmarkResidual")

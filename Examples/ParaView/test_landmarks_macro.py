@@ -5,9 +5,10 @@ Usage: pvpython test_landmarks_macro.py PLUGIN MESH MACRO OUTPUT_DIR
 
 The source is MESH, the target MESH turned by a Transform (its own pipeline object): vertex
 i of one is vertex i of the other, so the right pairs are (i, i). Checked: the refusals (no
-filter, zero or several points selected), a pick on the source then on the target, on the
-target then on the source (a pending pick in between), both at once with the target's point
-selected on the reader under the Transform; the filter's Landmarks property after each run;
+filter, zero or several points selected, a point that is a landmark already), a pick on the
+target then on the source and the other way round (a pending pick in between, the first
+one before the landmark pipelines exist), both at once with the target's point selected on
+the reader under the Transform; the filter's Landmarks property after each run;
 the glyph filters' points and numbers on each mesh; and, after the registration, the
 landmarks' field data and the map at the landmarks.
 """
@@ -18,8 +19,8 @@ import numpy as np
 
 from paraview import servermanager
 from paraview.simple import (
-    ClearSelection, FindSource, GetLayouts, GetRepresentation, LoadPlugin, OpenDataFile,
-    SaveScreenshot, SelectIDs, SetActiveSource, Transform)
+    ClearSelection, CreateView, FindSource, GetLayouts, GetRepresentation, LoadPlugin,
+    OpenDataFile, SaveScreenshot, SelectIDs, SetActiveSource, SetActiveView, Show, Transform)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 plugin, mesh, macro, output = sys.argv[1:5]
@@ -62,6 +63,11 @@ target_reader = OpenDataFile(mesh)
 target = Transform(Input=target_reader)
 target.Transform.Rotate = [0.0, 0.0, 90.0]
 source_points, target_points = points(source), points(target)
+# The GUI's first view, with the two meshes (ParaView's selections are made in a view).
+first_view = CreateView("RenderView")
+SetActiveView(first_view)
+Show(source, first_view)
+Show(target, first_view)
 
 expect_refusal("no Mobius Registration filter")
 registration = MobiusRegistration(Source=source, Target=target)  # noqa: F821 (the plugin's)
@@ -71,29 +77,34 @@ SetActiveSource(source)  # as after a selection in the GUI: the macro must find 
 a, b, c = (int(np.argmax(source_points[:, axis])) for axis in range(3))
 assert len({a, b, c}) == 3, (a, b, c)
 
-# Nothing selected: the side-by-side layout, no landmark.
+# A pick on the target before the first run: the landmark pipelines made by this run (their
+# ExtractSelection would take the target's selection as its own) must keep their own ids.
+select_points(target, a)
 run_macro()
+assert list(registration.Landmarks) == [] and stored_ids("target") == [a], stored_ids("target")
+assert np.array_equal(points(FindSource("Landmarks on target of MobiusRegistration1")), target_points[[a]])
 layouts = [layout for (name, _), layout in GetLayouts().items()
            if name == "Mobius landmarks: MobiusRegistration1"]
 assert len(layouts) == 1 and None not in [layouts[0].GetView(cell) for cell in (1, 2)], list(GetLayouts())
-assert list(registration.Landmarks) == []
+assert target.SMProxy.GetSelectionInput(0) is None  # the pick was consumed
 
-# Source first: a pending pick, then the pair.
+# Its partner on the source: the pair.
 select_points(source, a)
-run_macro()
-assert list(registration.Landmarks) == [], list(registration.Landmarks)
-assert source.SMProxy.GetSelectionInput(0) is None  # the pick was consumed
-assert stored_ids("source") == [a] and stored_ids("target") == []
-assert np.array_equal(points(FindSource("Landmarks on source of MobiusRegistration1")), source_points[[a]])
-select_points(target, a)
 run_macro()
 assert list(registration.Landmarks) == [a, a], list(registration.Landmarks)
 
-# Target first.
-select_points(target, b)
+# Nothing selected: nothing changes.
 run_macro()
 assert list(registration.Landmarks) == [a, a]
+
+# Source first: a pending pick, then the pair.
 select_points(source, b)
+run_macro()
+assert list(registration.Landmarks) == [a, a], list(registration.Landmarks)
+assert source.SMProxy.GetSelectionInput(0) is None
+assert stored_ids("source") == [a, b] and stored_ids("target") == [a]
+assert np.array_equal(points(FindSource("Landmarks on source of MobiusRegistration1")), source_points[sorted([a, b])])
+select_points(target, b)
 run_macro()
 assert list(registration.Landmarks) == [a, a, b, b], list(registration.Landmarks)
 
