@@ -168,8 +168,8 @@ def show_landmarks(registration, side, ids, view):
         return
     spheres.UpdatePipeline()
     display = Show(spheres, view)
-    display.UseSeparateColorMap = 1  # the same number, other point ids on the other mesh
-    ColorBy(display, ("POINTS", LANDMARK_ARRAY))
+    # A color map of its own: the same numbers are other point ids on the other mesh.
+    ColorBy(display, ("POINTS", LANDMARK_ARRAY), separate=True)
     colors = display.LookupTable
     colors.InterpretValuesAsCategories = 1
     colors.Annotations = [text for number, point_id in enumerate(ids, 1)

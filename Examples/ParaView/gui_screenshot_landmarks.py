@@ -1,6 +1,6 @@
 """Run by the ParaView GUI from gui_screenshot.sh (MOBIUS_GUI_SCRIPT=this file): loads the
-plugin and two four-legged meshes (the same orientation: head towards +x, up +y), runs the
-correspondence macro, then picks six landmarks on each as a user would with Select Points On
+plugin and two four-legged meshes standing up +y (facing +x and -x, or MOBIUS_HEADINGS),
+runs the correspondence macro, then picks six landmarks on each as a user would with Select Points On
 (the muzzle's tip, the rump's end, the lowest point of each leg), each pair by the Add
 Landmark Pair macro, applies the registration, and writes a marker file when the landmarks'
 views are drawn. Paths come from the environment (paraview passes no arguments to a script)."""
@@ -23,17 +23,17 @@ exec(open(env["MOBIUS_MACRO"]).read(), dict(globals()))
 registration = GetActiveSource()  # the macro leaves its filter active
 
 
-def landmarks(mesh):
-    """Muzzle, rump, and the lowest point of each leg (quadrants of x and z)."""
+def landmarks(mesh, heading):
+    """Muzzle, rump, and the lowest point of each leg (front or back, left or right) of a
+    four-legged mesh standing up +y and facing `heading` (+1: +x, -1: -x, turned about y)."""
     points = vtk_to_numpy(servermanager.Fetch(mesh).GetPoints().GetData())
-    chosen = [int(np.argmax(points[:, 0])), int(np.argmin(points[:, 0]))]
+    forward, side = heading * points[:, 0], heading * points[:, 2]
+    chosen = [int(np.argmax(forward)), int(np.argmin(forward))]
     for front in (True, False):
         for left in (True, False):
-            leg = np.flatnonzero(((points[:, 0] > 0) == front) & ((points[:, 2] > 0) == left))
+            leg = np.flatnonzero(((forward > 0) == front) & ((side > 0) == left))
             chosen.append(int(leg[np.argmin(points[leg, 1])]))
     return chosen
-
-
 
 def macro():
     exec(open(env["MOBIUS_LANDMARK_MACRO"]).read(), dict(globals()))
@@ -43,7 +43,9 @@ macro()  # nothing selected yet: the landmarks' tab, source and target side by s
 layout = [layout for (name, _), layout in GetLayouts().items() if name.startswith("Mobius landmarks")][0]
 views = [servermanager._getPyProxy(layout.GetView(cell)) for cell in (1, 2)]
 meshes = (registration.Source, registration.Target)  # as shown in the tab
-for source_id, target_id in zip(landmarks(source), landmarks(target)):
+# CGAL's cow faces +x, its bull -x.
+headings = [float(h) for h in env.get("MOBIUS_HEADINGS", "1 -1").split()]
+for source_id, target_id in zip(landmarks(source, headings[0]), landmarks(target, headings[1])):
     # Each pick in the view that shows the mesh, as Select Points On makes it.
     for view, mesh, point_id in zip(views, meshes, (source_id, target_id)):
         SetActiveView(view)

@@ -141,6 +141,10 @@ for side, view, mesh_points in zip(("source", "target"), views, (source_points, 
     assert list(table.Annotations) == [str(a), "1", str(b), "2", str(c), "3"], list(table.Annotations)
     colors.append(list(table.IndexedColors))
 assert colors[0] == colors[1] and len(set(map(tuple, np.reshape(colors[0], (-1, 3))))) == 3
+# Each mesh's color map is its own (the same number is another point id on the other mesh).
+tables = [GetRepresentation(FindSource(f"Landmark glyphs on {side} of MobiusRegistration1"), view).LookupTable
+          for side, view in zip(("source", "target"), views)]
+assert tables[0] != tables[1]
 SaveScreenshot(os.path.join(output, "landmarks.png"), layouts[0], ImageResolution=[1000, 500])
 
 # The registration with the three landmarks: one residual per landmark, and the map sends
