@@ -3,10 +3,10 @@ into a landmark pair of a Mobius Registration filter, and shows the pairs as num
 
 Installed beside MobiusRegistrationPipeline.py (Macros menu), or added with Macros -> Import
 new macro.... Use:
-  1. Open two meshes and apply Filters -> Mobius Registration -> Mobius Registration (or run
-     the MobiusRegistrationPipeline macro).
-  2. Run this macro with nothing selected: it opens a layout tab "Mobius landmarks N" with the
-     filter's Source (left) and Target (right) side by side.
+  1. Open two meshes and add Filters -> Mobius Registration -> Mobius Registration (Apply can
+     wait until the landmarks are in), or run the MobiusRegistrationPipeline macro.
+  2. Run this macro with nothing selected: it opens a layout tab "Mobius landmarks: <filter>"
+     with the filter's Source (left) and Target (right) side by side.
   3. Select one point on the source with ParaView's own tools (Select Points On, key d, or
      Interactive Select Points On) and run the macro: the point is kept as a pending
      landmark (a sphere on the source). Select its partner on the target and run the macro
@@ -14,16 +14,19 @@ new macro.... Use:
      matter (target first works too), and a selection on each mesh at once makes a pair in
      one run. ParaView keeps one selection at a time: a selection on the target clears the
      one on the source, hence the pending landmark.
-  4. Apply the filter (or render its output): the map respects the landmarks and reports
-     each landmark's residual in its field data (LandmarkResidual, LandmarkCount: the
-     Information panel).
+  4. Click Apply (the macro leaves the filter modified and active): the map respects the
+     landmarks and reports each landmark's residual in its field data (LandmarkResidual,
+     LandmarkCount: the Information panel).
 The glyphs are spheres colored by landmark number, the same colors on both meshes (the
-color legend gives the numbers). They are pipeline objects of their own: per mesh, a
-selection source "Landmark ids on source of <filter>" holding the point ids, the selected
-points, their ids as an array, and the glyphs. They are redrawn from the filter's Landmarks
-at every run (edit the property in the panel, then run the macro with nothing selected). A pick is refused with a message when zero or several
-points are selected on a mesh, the selection is not on the filter's Source or Target (or a
-mesh upstream of it with the same points), or no Mobius Registration filter exists.
+color legend gives the numbers). They are pipeline objects of their own: per mesh, the
+landmarks' points ("Landmarks on source of <filter>", an ExtractSelection whose selection
+input, "Landmark ids on source of <filter>", holds their point ids), their ids as an array,
+and the glyphs. They are redrawn from the filter's Landmarks at every run (edit the
+property in the panel, then run the macro with nothing selected). A pick is refused with a
+message when zero or several points are selected on a mesh or the point is a landmark
+already (the filter refuses a vertex in two landmarks), and the macro stops with one when
+no Mobius Registration filter exists. A selection elsewhere than on the filter's Source or
+Target (or a mesh upstream of it with the same points) is not a pick.
 """
 from paraview import servermanager
 from paraview.simple import (

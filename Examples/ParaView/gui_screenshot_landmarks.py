@@ -1,26 +1,24 @@
 """Run by the ParaView GUI from gui_screenshot.sh (MOBIUS_GUI_SCRIPT=this file): loads the
 plugin and two four-legged meshes standing up +y (facing +x and -x, or MOBIUS_HEADINGS),
-runs the correspondence macro, then picks six landmarks on each as a user would with Select Points On
-(the muzzle's tip, the rump's end, the lowest point of each leg), each pair by the Add
-Landmark Pair macro, applies the registration, and writes a marker file when the landmarks'
-views are drawn. Paths come from the environment (paraview passes no arguments to a script)."""
+adds a Mobius Registration filter, then picks six landmarks on each as a user would with
+Select Points On (the muzzle's tip, the rump's end, the lowest point of each leg), each pair
+by the Add Landmark Pair macro, and writes a marker file when the landmarks' views are
+drawn: the filter's panel shows the Landmarks, Apply is next. Paths come from the environment (paraview passes no arguments to a script)."""
 import os
 
 import numpy as np
 
 from paraview import servermanager
 from paraview.simple import (
-    GetActiveSource, GetLayouts, GetViews, LoadPlugin, OpenDataFile, Render, SelectIDs,
-    SetActiveSource, SetActiveView)
+    GetLayouts, LoadPlugin, OpenDataFile, Render, SelectIDs, SetActiveSource, SetActiveView)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 env = os.environ
 LoadPlugin(env["MOBIUS_PLUGIN"], remote=False, ns=globals())
 source = OpenDataFile(env["MOBIUS_SOURCE"])
 target = OpenDataFile(env["MOBIUS_TARGET"])
-SetActiveSource(source)
-exec(open(env["MOBIUS_MACRO"]).read(), dict(globals()))
-registration = GetActiveSource()  # the macro leaves its filter active
+# The filter as Filters -> Mobius Registration makes it, before Apply.
+registration = MobiusRegistration(Source=source, Target=target)  # noqa: F821 (the plugin's)
 
 
 def landmarks(mesh, heading):
@@ -51,13 +49,9 @@ for source_id, target_id in zip(landmarks(source, headings[0]), landmarks(target
         SetActiveView(view)
         SelectIDs(IDs=[0, point_id], FieldType="POINT", Source=mesh)
         macro()
-registration.UpdatePipeline()  # Apply
-for view in GetViews():
+for view in views:
     Render(view)
 SetActiveView(views[0])
-SetActiveSource(registration)
-fields = servermanager.Fetch(registration).GetFieldData()
-residuals = fields.GetArray("LandmarkResidual")
-print("landmark residuals:", [residuals.GetValue(i) for i in range(residuals.GetNumberOfTuples())] if residuals else None)
+SetActiveSource(registration)  # its panel, with the Landmarks, and Apply to click
 with open(env["MOBIUS_DONE"], "w") as done:
     done.write("drawn\n")
