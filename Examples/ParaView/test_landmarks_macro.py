@@ -166,3 +166,12 @@ median = np.median(np.linalg.norm(mapped - target_points, axis=1)) / diagonal
 assert median < 0.01, median
 print("3 landmarks; residuals", residuals, "; mapped landmark error / diagonal", errors,
       "; median error / diagonal %.2g" % median)
+
+# LandmarkMode through its panel entry: the 3 landmarks met exactly by a Moebius transform.
+registration.LandmarkMode = "Exact Moebius Fit"
+registration.UpdatePipeline()
+fields = servermanager.Fetch(registration).GetFieldData()
+exact = vtk_to_numpy(fields.GetArray("LandmarkResidual"))
+assert registration.SMProxy.GetProperty("LandmarkMode").GetElement(0) == 1 and fields.GetArray("LandmarkCount").GetValue(0) == 3
+assert exact.shape[0] == 3 and np.all(exact < 0.02), exact
+print("Exact Moebius Fit: residuals", exact)
