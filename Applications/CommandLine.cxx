@@ -221,6 +221,7 @@ bool SetLandmarks(const Values& values, CommandLine& line, std::string& error)
     error = "--landmarks may be given once";
     return false;
   }
+  line.Pipeline.LandmarksFile = values[0];
   return ReadLandmarkFile(values[0], line.Pipeline.Landmarks, error);
 }
 

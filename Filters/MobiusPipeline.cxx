@@ -149,8 +149,8 @@ void AddLandmarkPoints(const PipelineResult& result, vtkMobiusLandmarkPolyDataAl
 void AddLandmarkResiduals(PipelineResult& result)
 {
   vtkFieldData* fields = result.Correspondence->GetFieldData();
-  mobius::vtk::SetFieldCount(
-    fields, "LandmarkCount", static_cast<vtkIdType>(result.SourceLandmarks.size()));
+  mobius::vtk::SetFieldInteger(
+    fields, "LandmarkCount", static_cast<int>(result.SourceLandmarks.size()));
   vtkDataArray* mapped = result.Correspondence->GetPointData()->GetArray("MappedPoints");
   vtkDataArray* targetSurface = result.TargetCentered->GetPointData()->GetArray("SurfacePoints");
   vtkDataArray* targetAreas = result.TargetCentered->GetCellData()->GetArray("SurfaceArea");

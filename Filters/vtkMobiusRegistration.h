@@ -165,9 +165,10 @@ public:
    * chooses among the correlation's transforms, and with 3 or more landmarks their best-fit
    * rotation, the one that brings the landmarks' sphere points closest together; 1 a Möbius
    * transform of the source's sphere makes the first 3 landmarks meet exactly, in place of
-   * the rotation (needs at least 3 landmarks).
+   * the rotation (needs at least 3 landmarks). Checked as the other properties are (see
+   * CheckParameters), not clamped.
    */
-  vtkSetClampMacro(LandmarkMode, int, 0, 1);
+  vtkSetMacro(LandmarkMode, int);
   vtkGetMacro(LandmarkMode, int);
   ///@}
 

@@ -75,18 +75,6 @@ std::string GatherLandmarks(const std::vector<std::pair<vtkIdType, vtkIdType>>& 
   return {};
 }
 
-// The result's best transform and figures from its first candidate.
-void TakeFirstCandidate(mobius::SO3CorrelationResult& result)
-{
-  const mobius::SO3Candidate& best = result.Candidates.front();
-  result.Transform = best.Transform;
-  result.Determinant = best.Determinant;
-  result.EulerAngles = best.EulerAngles;
-  result.Score = best.Score;
-  result.RegistrationError = best.RegistrationError;
-  result.CorrelationCoefficient = best.CorrelationCoefficient;
-}
-
 void AddTupleArray(vtkFieldData* fieldData, const char* name, int components,
   const std::vector<std::vector<double>>& tuples)
 {
@@ -264,7 +252,8 @@ int vtkSO3Register::ComputeOutput(
     // The Möbius transformation takes the rotation's place: of the rotation only its kind
     // (a reflection or not) is kept.
     const bool reflect = this->TransformMode == REFLECTIONS ||
-      (this->TransformMode == ROTATIONS_AND_REFLECTIONS && result.Determinant < 0);
+      (this->TransformMode == ROTATIONS_AND_REFLECTIONS &&
+        mobius::LandmarksReverseOrientation(landmarks));
     if (!mobius::MoveByLandmarkMobius(landmarks, reflect, sourcePoints))
     {
       vtkErrorMacro(<< "Cannot register: two of the first " << mobius::FittedLandmarkCount
@@ -275,7 +264,7 @@ int vtkSO3Register::ComputeOutput(
     const Eigen::Matrix3d kind = Eigen::Vector3d(1.0, reflect ? -1.0 : 1.0, 1.0).asDiagonal();
     result.Candidates = { mobius::ScoreTransform(
       signals[0].Coefficients, signals[1].Coefficients, kind, threads) };
-    TakeFirstCandidate(result);
+    mobius::TakeFirstCandidate(result);
   }
   else if (landmarks.Source.rows() > 0)
   {
@@ -284,7 +273,7 @@ int vtkSO3Register::ComputeOutput(
         return mobius::ScoreTransform(
           signals[0].Coefficients, signals[1].Coefficients, transform, threads);
       });
-    TakeFirstCandidate(result);
+    mobius::TakeFirstCandidate(result);
   }
   mobius::MirrorCheck mirroring;
   if (this->CheckMirroring)

@@ -39,8 +39,8 @@
  * orthogonal Procrustes) is a candidate too: 3 landmarks tell a symmetric shape from its
  * mirror image or its half-turned copy, which correlate equally well. With LandmarkMode 1
  * the source map is moved by the Möbius transformation that sends the first 3 landmarks
- * exactly onto their targets (after a reflection with TransformMode REFLECTIONS, or when
- * the correlation's best transform is one with ROTATIONS_AND_REFLECTIONS); `Rotation` and
+ * exactly onto their targets (after a reflection with TransformMode REFLECTIONS, or with
+ * ROTATIONS_AND_REFLECTIONS when the 3 go round the other way on the target); `Rotation` and
  * the only candidate are then the identity (or the reflection y -> -y).
  *
  * Errors: an input that is not a spherical map (or has a triangle referring to a point id

@@ -53,6 +53,10 @@ def _default_options():
         "keep_largest_component": bool(conformal.GetKeepLargestComponent()),
         "allow_poor_maps": False,  # accept degenerate conformal maps instead of raising
         "threads": registration.GetNumberOfThreads(),  # threads per threaded filter (0: automatic); same results
+        # [(source vertex, target vertex), ...]: points whose images are known (mobius-register --landmarks)
+        "landmarks": (),
+        # 0: the rotation is chosen by the landmarks; 1: a Moebius transform fits 3 of them (--landmark-mode)
+        "landmark_mode": vtkMobiusRegistration().GetLandmarkMode(),
     }
 
 
@@ -158,6 +162,8 @@ class Registration:
     - `transform` (3, 3): the rotation (or reflection) aligning the two spherical maps;
     - `quality`: the main figures (registration error, conformal distortion of each map,
       refinement residuals when refined); `fields`: every numeric field of the output;
+    - `landmark_residuals` (k,): per landmark, the straight-line distance on the target
+      between the image of its source vertex and its target vertex, over sqrt(target area);
     - `polydata`: the output vtkPolyData (the source mesh on the target, with all arrays).
     """
 
@@ -182,6 +188,7 @@ class Registration:
         self.barycentric = point_array("TargetBarycentric").reshape(-1, 3)[order]
         self.mapped_points = point_array("MappedPoints").reshape(-1, 3)[order]
         self.transform = np.asarray(fields["Rotation"], dtype=float).reshape(3, 3)
+        self.landmark_residuals = np.atleast_1d(np.asarray(fields.get("LandmarkResidual", []), dtype=float))
         self.quality = quality
         self.fields = fields
         self.polydata = polydata
@@ -236,9 +243,25 @@ def _require_real(name, value):
         raise ValueError(f"{name} must be a number, got {value!r}")
 
 
+def _landmark_pairs(landmarks):
+    """The landmarks as a list of (source vertex, target vertex) integer pairs: any sequence
+    of pairs, or an (n, 2) integer array. Which vertices are allowed is the filter's rule."""
+    try:
+        pairs = [tuple(pair) for pair in landmarks]
+    except TypeError:
+        raise ValueError(f"landmarks must be a list of (source vertex, target vertex) pairs, "
+                         f"got {landmarks!r}") from None
+    for index, pair in enumerate(pairs):
+        if len(pair) != 2 or not all(
+                isinstance(vertex, (int, np.integer)) and not isinstance(vertex, bool) for vertex in pair):
+            raise ValueError(f"landmarks[{index}] must be a pair of integer vertex numbers "
+                             f"(source, target), got {pair!r}")
+    return [(int(source), int(target)) for source, target in pairs]
+
+
 def _registration_filter(options, errors):
-    """vtkMobiusRegistration with register()'s options, checked by the rules every interface
-    shares (ValueError in register()'s words)."""
+    """vtkMobiusRegistration with register()'s options; their values are checked once the
+    meshes are there (_check_options)."""
     registration = errors.watch(vtkMobiusRegistration())
     registration.SetMaximumNumberOfIterations(int(options["iterations"]))
     registration.SetConvergenceTolerance(float(options["tolerance"]))
@@ -254,10 +277,24 @@ def _registration_filter(options, errors):
     registration.SetGeometricPolish(bool(options["polish"]))
     registration.SetCandidate(-1 if options["candidate"] is None else int(options["candidate"]))
     registration.SetNumberOfThreads(int(options["threads"]))
+    registration.SetLandmarkMode(int(options["landmark_mode"]))
+    for source_vertex, target_vertex in _landmark_pairs(options["landmarks"]):
+        registration.AddLandmark(_id_type(source_vertex), _id_type(target_vertex))
+    return registration
+
+
+def _id_type(vertex):
+    """A vertex number as a vtkIdType takes it: beyond its range (where the wrapping would
+    raise its own error) the nearest end, which names no vertex either, as the rules say."""
+    return max(-2 ** 63, min(vertex, 2 ** 63 - 1))
+
+
+def _check_options(registration):
+    """The rules every interface shares (ValueError in register()'s words); the landmarks'
+    vertices against the meshes given."""
     out_of_range = registration.CheckParameters(vtkMobiusRegistration.PYTHON_NAMES)
     if out_of_range:
         raise ValueError(out_of_range)
-    return registration
 
 
 def register(source, target, **options):
@@ -272,6 +309,10 @@ def register(source, target, **options):
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
     candidate=None (keep this candidate's refined map, 0..candidates-1, as --candidate, for a
     map that came out turned while a warning named a near-equal runner-up), iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,
+    landmarks=() (pairs (source vertex, target vertex) of input vertex numbers whose images
+    are known: the rotation is chosen by them and the refinement maps them exactly; their
+    residuals are `landmark_residuals`), landmark_mode=0 (1: a Moebius transform sends the
+    first 3 landmarks onto their targets instead of the rotation; needs 3 landmarks),
     allow_poor_maps=False, threads=0 (threads of each threaded filter, 0 to 1024; 0 is one
     per core this process may run on, at most VTK_SMP_MAX_THREADS when set; the result is
     the same for any count, and `fields["NumberOfThreadsUsed"]` says what ran).
@@ -288,7 +329,7 @@ def register(source, target, **options):
         raise ValueError(f"transform must be one of {', '.join(_TRANSFORM_MODES)}, got {options['transform']!r}")
     # Python's part of the checks: the types. Which values are allowed is checked below by
     # the filter, in the same place as for mobius-register and the VTK filters.
-    for name in ("resolution", "candidates", "threads", "basis_size", "iterations"):
+    for name in ("resolution", "candidates", "threads", "basis_size", "iterations", "landmark_mode"):
         _require_int(name, options[name])
     if options["candidate"] is not None:
         _require_int("candidate", options["candidate"])
@@ -297,6 +338,7 @@ def register(source, target, **options):
 
     errors = _Errors()
     registration = _registration_filter(options, errors)
+    _check_options(registration)  # the values that do not depend on the meshes, before reading them
     source_mesh, source_name = _as_polydata(source, "source", errors)
     target_mesh, target_name = _as_polydata(target, "target", errors)
     # The filters give an empty output for an empty input (VTK's convention), not an error.
@@ -306,6 +348,7 @@ def register(source, target, **options):
 
     registration.SetSourceData(source_mesh)
     registration.SetTargetData(target_mesh)
+    _check_options(registration)
     registration.SetSourceName(source_name)
     registration.SetTargetName(target_name)
     registration.Update()

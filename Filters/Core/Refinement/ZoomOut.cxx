@@ -112,20 +112,18 @@ double CurvatureDifference(const SpectralSurface& source, const SpectralSurface&
   return sum / static_cast<double>(targetVertex.size());
 }
 
-std::vector<Index> AddPinnedSamples(SpectralSurface& surface, const std::vector<Index>& vertices)
+void AddPinnedSamples(SpectralSurface& surface, const std::vector<Index>& vertices)
 {
-  std::vector<Index> positions;
   for (Index vertex : vertices)
   {
     const auto found = std::find(surface.Samples.begin(), surface.Samples.end(), vertex);
-    positions.push_back(static_cast<Index>(found - surface.Samples.begin()));
+    const auto position = static_cast<Index>(found - surface.Samples.begin());
     if (found == surface.Samples.end())
     {
       surface.Samples.push_back(vertex);
     }
-    surface.SampleLabels[static_cast<size_t>(vertex)] = positions.back();
+    surface.SampleLabels[static_cast<size_t>(vertex)] = position;
   }
-  return positions;
 }
 
 int NextBasisSize(int size, double growth)

@@ -122,8 +122,8 @@ struct SampleAnchor
 constexpr double kPinnedSampleWeight = 20.0;
 
 /// Adds `vertices` (landmarks) to the surface's samples where they are not samples yet, and
-/// makes each the nearest sample of its own vertex; returns each one's position in Samples.
-std::vector<Index> AddPinnedSamples(SpectralSurface& surface, const std::vector<Index>& vertices);
+/// makes each the nearest sample of its own vertex.
+void AddPinnedSamples(SpectralSurface& surface, const std::vector<Index>& vertices);
 
 /// ZoomOut from `initialTargetVertex` (one target vertex per source sample, e.g. read off
 /// the Möbius map) on the samples of both surfaces.

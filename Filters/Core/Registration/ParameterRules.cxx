@@ -73,7 +73,7 @@ const ParameterNames CandidatesNames{ "NumberOfCandidates", "candidates", "--can
 const ParameterNames LandmarksNames{ "Landmarks", "landmarks", "--landmarks" };
 
 // Landmark number `k` as the interface shows it: "landmark 2" (filter), "landmarks[2]"
-// (Python), "line 7" of the file or "pair 2" (command line).
+// (Python), "FILE line 7" or "pair 2" (command line).
 std::string LandmarkName(const RegistrationParameters& p, size_t k, ParameterNaming naming)
 {
   switch (naming)
@@ -81,7 +81,9 @@ std::string LandmarkName(const RegistrationParameters& p, size_t k, ParameterNam
     case ParameterNaming::Python:
       return "landmarks[" + Text(k) + "]";
     case ParameterNaming::CommandLine:
-      return p.Landmarks[k].Line > 0 ? "line " + Text(p.Landmarks[k].Line) : "pair " + Text(k);
+      return p.Landmarks[k].Line > 0
+        ? (p.LandmarksFile.empty() ? "" : p.LandmarksFile + " ") + "line " + Text(p.Landmarks[k].Line)
+        : "pair " + Text(k);
     case ParameterNaming::Filter:
       break;
   }

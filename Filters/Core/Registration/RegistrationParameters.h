@@ -16,6 +16,7 @@
 #include "ScaleFactorSignal.h"
 #include "ZoomOut.h"
 
+#include <string>
 #include <vector>
 
 namespace mobius
@@ -122,6 +123,8 @@ struct RegistrationParameters
   int Candidate = -1;          ///< the refinement's candidate to keep (-1: it chooses)
   /// Points whose images the user knows: every stage keeps them (none by default).
   std::vector<Landmark> Landmarks;
+  /// The file the landmarks were read from (Landmark::Line's), for messages; empty if none.
+  std::string LandmarksFile;
   int LandmarkMode = static_cast<int>(mobius::LandmarkMode::ChooseRotation);
   /// Threads of every threaded stage (0: automatic, one per core of the CPU affinity mask,
   /// at most VTK_SMP_MAX_THREADS); the results do not depend on it.

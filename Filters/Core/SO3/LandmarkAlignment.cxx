@@ -115,6 +115,14 @@ MobiusMatrix ToZeroOneInfinity(const Homogeneous& a, const Homogeneous& b, const
 }
 }
 
+bool LandmarksReverseOrientation(const SphereLandmarks& landmarks)
+{
+  auto turn = [](const Points& p) {
+    return p.row(0).dot(p.row(1).cross(p.row(2)));
+  };
+  return landmarks.Source.rows() >= 3 && turn(landmarks.Source) * turn(landmarks.Target) < 0;
+}
+
 bool MoveByLandmarkMobius(
   const SphereLandmarks& landmarks, bool reverseOrientation, Points& points)
 {

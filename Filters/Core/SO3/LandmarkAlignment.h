@@ -52,6 +52,12 @@ std::vector<double> OrderCandidatesByLandmarks(std::vector<SO3Candidate>& candid
 /// transformation is fixed by 3 points and their images: on the stereographic plane,
 /// f = W^-1 Z with Z the map sending the source points to 0, 1 and infinity and W the
 /// same for the targets. False (points unchanged) if two of the 3 points coincide on a side.
+/// Whether the first 3 landmarks go round the other way on the target's sphere than on the
+/// source's: a Möbius transformation keeps the orientation of every triangle of points, so
+/// only one after a reflection can send them onto their targets without turning the
+/// sphere inside out.
+bool LandmarksReverseOrientation(const SphereLandmarks& landmarks);
+
 bool MoveByLandmarkMobius(
   const SphereLandmarks& landmarks, bool reverseOrientation, Points& points);
 }

@@ -930,16 +930,22 @@ SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients&
     result.Candidates.push_back(
       ScoredCandidate(source, target, determinant * PeakRotation(peak), peak.Score));
   }
-  if (!result.Candidates.empty())
-  {
-    const SO3Candidate& best = result.Candidates.front();
-    result.Transform = best.Transform;
-    result.Determinant = best.Determinant;
-    result.EulerAngles = best.EulerAngles;
-    result.Score = best.Score;
-    result.RegistrationError = best.RegistrationError;
-    result.CorrelationCoefficient = best.CorrelationCoefficient;
-  }
+  TakeFirstCandidate(result);
   return result;
+}
+
+void TakeFirstCandidate(SO3CorrelationResult& result)
+{
+  if (result.Candidates.empty())
+  {
+    return;
+  }
+  const SO3Candidate& best = result.Candidates.front();
+  result.Transform = best.Transform;
+  result.Determinant = best.Determinant;
+  result.EulerAngles = best.EulerAngles;
+  result.Score = best.Score;
+  result.RegistrationError = best.RegistrationError;
+  result.CorrelationCoefficient = best.CorrelationCoefficient;
 }
 }

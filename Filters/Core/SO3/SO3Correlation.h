@@ -112,6 +112,10 @@ struct SO3CorrelationResult
 SO3CorrelationResult CorrelateOverRotations(const SphericalHarmonicCoefficients& source,
   const SphericalHarmonicCoefficients& target, const SO3CorrelationOptions& options = {});
 
+/// The result's best transform and figures from its first candidate (after the candidates
+/// were put in another order, e.g. by landmarks); nothing without candidates.
+void TakeFirstCandidate(SO3CorrelationResult& result);
+
 /// A candidate for the orthogonal `transform` whose correlation is `score`: its Euler
 /// angles, registration error and correlation coefficient.
 SO3Candidate ScoredCandidate(const SphericalHarmonicCoefficients& source,

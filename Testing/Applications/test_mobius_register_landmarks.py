@@ -1,0 +1,76 @@
+"""mobius-register --landmarks as a user runs it: a landmarks file (commas or spaces,
+comments, blank lines) sends each source landmark onto its target vertex, and --json reports
+each one's residual (0 when refined); --landmark-mode 1 does the same by a Moebius transform;
+a file that cannot be read or holds a malformed line, a vertex the mesh does not have, a
+vertex in two landmarks, too few landmarks for --landmark-mode 1, or --landmarks with
+--symmetry are one-line errors naming the file and line, and leave no output."""
+import json
+import os
+import shutil
+import sys
+
+from cli_harness import Harness
+
+program, mesh_dir, work = sys.argv[1], sys.argv[2], sys.argv[3]
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+harness = Harness(program, work)
+run, check = harness.run, harness.check
+
+hand = os.path.join(mesh_dir, "hand.off")
+with open(hand) as f:
+    f.readline()
+    vertices = int(f.readline().split()[0])
+
+
+def landmarks_file(name, text):
+    """Writes the file in the work folder, where the program runs: its name as typed."""
+    with open(os.path.join(work, name), "w") as f:
+        f.write(text)
+    return name
+
+
+good = landmarks_file("good.csv", "# source, target\n10,10\n\n200 200  # a comment\n400,\t400\n")
+for mode in ("0", "1"):
+    code, out, err = run(hand, hand, "-o", "map" + mode, "--landmarks", good, "--landmark-mode", mode,
+                         "--resolution", "64", "--json")
+    check(code == 0, f"--landmarks, mode {mode}: exit {code}: {err}")
+    if code == 0:
+        landmarks = json.loads(out)["landmarks"]
+        print(f"mode {mode}:", landmarks)
+        check(landmarks["count"] == 3 and landmarks["mode"] == int(mode), f"mode {mode}: count and mode")
+        check(len(landmarks["residuals"]) == 3 and all(r < 1e-9 for r in landmarks["residuals"]),
+              f"mode {mode}: every landmark on its target vertex")
+        # In OUT.csv, row i (file vertex i) of each landmark lands on its target vertex.
+        with open(os.path.join(work, f"map{mode}.csv")) as f:
+            header = f.readline().strip().split(",")
+            rows = [line.strip().split(",") for line in f]
+        column = {name: k for k, name in enumerate(header)}
+        for vertex in (10, 200, 400):
+            row = next(r for r in rows if int(r[column["source_vertex"]]) == vertex)
+            corners = [int(row[column[f"target_vertex_{c}"]]) for c in range(3)]
+            weights = [float(row[column[f"barycentric_{c}"]]) for c in range(3)]
+            check(corners[weights.index(max(weights))] == vertex and max(weights) > 1 - 1e-9,
+                  f"mode {mode}: vertex {vertex} mapped onto target vertex {vertex}: {row}")
+
+cases = [
+    ("missing.csv", None, ["missing.csv", "cannot read the landmarks file"], 2),
+    ("malformed.csv", "1,2\n3;4\n", ["malformed.csv line 2", "two vertex numbers", "3;4"], 2),
+    ("three.csv", "1 2 3\n", ["three.csv line 1", "two vertex numbers"], 2),
+    ("negative.csv", "-1,2\n", ["negative.csv line 1", "non-negative"], 2),
+    ("empty.csv", "# nothing\n\n", ["empty.csv", "no landmarks"], 2),
+    ("twice.csv", "1,2\n1,3\n", ["--landmarks", "source vertex 1 in twice.csv line 1 and twice.csv line 2"], 2),
+    ("outside.csv", f"1,2\n3,{vertices}\n",
+     ["--landmarks outside.csv line 2", f"no target vertex {vertices}", f"{vertices} vertices"], 1),
+]
+for name, text, words, code_expected in cases:
+    path = name if text is None else landmarks_file(name, text)
+    harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", path, "--resolution", "64"], words, ["bad"],
+                           code_expected=code_expected)
+harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", landmarks_file("two.csv", "1,1\n2,2\n"),
+                        "--landmark-mode", "1"], ["--landmark-mode needs", "not 1 with 2 landmarks"], ["bad"], code_expected=2)
+harness.expect_failure(["--symmetry", hand, "-o", "bad", "--landmarks", good],
+                       ["--landmarks is for registering two meshes"], ["bad"], code_expected=2)
+
+print(f"{len(harness.failures)} failure(s)")
+sys.exit(1 if harness.failures else 0)

@@ -1,0 +1,113 @@
+"""register(landmarks=...): on a non-isometric pair with known correspondence (CGAL's cow
+and a copy stretched along its length, squashed across and inflated at one end, vertex i
+of one the image of vertex i of the other), 5 landmarks must make the map better than
+without them, in both landmark modes, every landmark landing on its target vertex; bad
+landmarks raise ValueError in register()'s words."""
+import os
+import sys
+import warnings
+
+import numpy as np
+
+from mobiusregistration import register
+
+mesh_dir = os.environ.get("MOBIUS_MESH_DIR", "")
+cow = os.path.join(mesh_dir, "cow.off")
+if not os.path.exists(cow):
+    print(f"no example meshes in MOBIUS_MESH_DIR={mesh_dir!r}")
+    sys.exit(1)
+
+failures = []
+
+
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+        print("FAILED:", what)
+
+
+def read_off(path):
+    with open(path) as stream:
+        words = [line.split("#")[0].split() for line in stream]
+    words = [w for w in words if w]
+    counts = [int(x) for x in words[1][:2]] if words[0] == ["OFF"] else [int(x) for x in words[0][3:5]]
+    rows = words[2:] if words[0] == ["OFF"] else words[1:]
+    vertices = np.array(rows[:counts[0]], dtype=float)
+    faces = np.array([row[1:4] for row in rows[counts[0]:counts[0] + counts[1]]], dtype=np.int64)
+    return vertices, faces
+
+
+def surface_area(vertices, faces):
+    corners = vertices[faces]
+    return 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1).sum()
+
+
+vertices, faces = read_off(cow)
+# In the cow's principal axes: the copy is 35% longer, 20% thinner, and blown up around its
+# front end (a Gaussian bulge): not isometric, and the automatic map misplaces the bulge.
+local = (vertices - vertices.mean(axis=0)) @ np.linalg.svd(vertices - vertices.mean(axis=0), full_matrices=False)[2].T
+front = local[np.argmax(local[:, 0])]
+distance = np.linalg.norm(local - front, axis=1)
+radius = 0.35 * np.ptp(local[:, 0])
+deformed = local * np.array([1.35, 0.8, 1.0]) + 0.6 * (local - front) * np.exp(-(distance / radius) ** 2)[:, None]
+scale = np.sqrt(surface_area(deformed, faces))
+
+# 5 landmarks spread over the cow (farthest-point order from its front end), each sent to
+# the same vertex number of the copy.
+chosen = [int(np.argmax(local[:, 0]))]
+while len(chosen) < 5:
+    chosen.append(int(np.argmax(np.min(np.linalg.norm(local[:, None] - local[chosen][None], axis=2), axis=1))))
+landmarks = [(v, v) for v in chosen]
+
+
+def mean_error(result):
+    return np.mean(np.linalg.norm(result.mapped_points - deformed[result.source_vertex], axis=1)) / scale
+
+
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")
+    automatic = register((local, faces), (deformed, faces))
+    without = mean_error(automatic)
+    check(automatic.landmark_residuals.size == 0 and automatic.fields["LandmarkCount"] == 0,
+          "no landmarks: no residuals")
+    for mode in (0, 1):
+        result = register((local, faces), (deformed, faces), landmarks=landmarks, landmark_mode=mode)
+        error = mean_error(result)
+        print(f"mean error without landmarks {without:.4f}, with 5 (mode {mode}) {error:.4f}")
+        # Measured 0.051 without, 0.026 (mode 0) and 0.046 (mode 1) with them.
+        check(error < 0.95 * without, f"mode {mode}: 5 landmarks improve the map")
+        check(result.landmark_residuals.shape == (5,), f"mode {mode}: one residual per landmark")
+        check(np.all(result.landmark_residuals < 1e-9), f"mode {mode}: landmarks on their targets")
+        # The residual is the landmark's own error: its mapped point is the target vertex.
+        for source_vertex, target_vertex in landmarks:
+            row = np.flatnonzero(result.source_vertex == source_vertex)[0]
+            check(np.linalg.norm(result.mapped_points[row] - deformed[target_vertex]) < 1e-9 * scale,
+                  f"mode {mode}: landmark {source_vertex} mapped onto its target vertex")
+    # A numpy array of pairs is taken as a list of them.
+    as_array = register((local, faces), (deformed, faces), landmarks=np.array(landmarks), refine=False)
+    check(as_array.fields["LandmarkCount"] == 5, "landmarks as an (n, 2) array")
+
+
+def expect_value_error(words, **options):
+    try:
+        register((local, faces), (deformed, faces), **options)
+    except ValueError as error:
+        check(words in str(error), f"expected {words!r} in {error}")
+        return
+    check(False, f"no ValueError for {options}")
+
+
+n = len(vertices)
+expect_value_error(f"landmarks[1] names target vertex {n}, which does not exist: the target mesh has {n} vertices",
+                   landmarks=[(0, 0), (1, n)])
+expect_value_error("landmarks[0] names source vertex -1", landmarks=[(-1, 0)])
+expect_value_error("source vertex 3 in landmarks[0] and landmarks[1]", landmarks=[(3, 0), (3, 1)])
+expect_value_error("target vertex 0 in landmarks[0] and landmarks[1]", landmarks=[(3, 0), (4, 0)])
+expect_value_error("landmark_mode must be 0", landmarks=[(0, 0), (1, 1)], landmark_mode=1)
+expect_value_error("landmark_mode must be 0", landmark_mode=2)
+expect_value_error("landmarks[0] must be a pair of integer vertex numbers", landmarks=[(0, 1, 2)])
+expect_value_error("landmarks[1] must be a pair of integer vertex numbers", landmarks=[(0, 1), (0.5, 2)])
+expect_value_error("landmarks must be a list of", landmarks=5)
+expect_value_error("landmark_mode must be an integer", landmark_mode="1")
+
+sys.exit(1 if failures else 0)
