@@ -44,10 +44,11 @@ PALETTE = [(0.90, 0.10, 0.10), (0.10, 0.55, 0.95), (0.15, 0.75, 0.20), (1.00, 0.
 
 
 class LandmarkError(RuntimeError):
-    pass
+    """A pick or a pipeline the macro cannot use; the message says what to do."""
 
 
 def proxy_name(proxy):
+    """The name the Pipeline Browser shows for a pipeline object."""
     for (name, _), candidate in GetSources().items():
         if candidate == proxy:
             return name
@@ -134,8 +135,9 @@ def landmark_ids(registration, side):
     # user's pick, when there is one) in place of the one given at creation.
     points.Selection = ids
     # ExtractSelection's vtkOriginalPointIds, under a name of their own, for the colors.
-    numbered = Calculator(registrationName=f"Landmark point ids on {side} of {proxy_name(registration)}",
-                          Input=points, ResultArrayName=LANDMARK_ARRAY, Function="vtkOriginalPointIds")
+    numbered = Calculator(
+        registrationName=f"Landmark point ids on {side} of {proxy_name(registration)}",
+        Input=points, ResultArrayName=LANDMARK_ARRAY, Function="vtkOriginalPointIds")
     spheres = Glyph(registrationName=f"Landmark glyphs on {side} of {proxy_name(registration)}",
                     Input=numbered, GlyphType="Sphere")
     spheres.GlyphMode = "All Points"
@@ -207,7 +209,7 @@ def chosen_registration():
     found = registrations()
     if not found:
         raise LandmarkError(
-            "Add Landmark Pair: no Mobius Registration filter; apply Filters -> Mobius "
+            "Add Landmark Pair: no Mobius Registration filter; add Filters -> Mobius "
             "Registration -> Mobius Registration to the two meshes first (or run the "
             "MobiusRegistrationPipeline macro)")
     active = GetActiveSource()
@@ -250,8 +252,10 @@ def add_landmark_pair():
                    f"select its partner on the {other} and run the macro again")
 
     views, new_layout = landmark_layout(registration)
-    ids = {side: [pair[index] for pair in committed] + ([picks[side]] if picks[side] is not None else [])
-           for index, side in enumerate(SIDES)}
+    ids = {}
+    for index, side in enumerate(SIDES):
+        pending = [] if picks[side] is None else [picks[side]]
+        ids[side] = [pair[index] for pair in committed] + pending
     for side, view in zip(SIDES, views):
         show_landmarks(registration, side, ids[side], view)
     for view in views:

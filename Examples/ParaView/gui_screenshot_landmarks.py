@@ -3,7 +3,8 @@ plugin and two four-legged meshes standing up +y (facing +x and -x, or MOBIUS_HE
 adds a Mobius Registration filter, then picks six landmarks on each as a user would with
 Select Points On (the muzzle's tip, the rump's end, the lowest point of each leg), each pair
 by the Add Landmark Pair macro, and writes a marker file when the landmarks' views are
-drawn: the filter's panel shows the Landmarks, Apply is next. Paths come from the environment (paraview passes no arguments to a script)."""
+drawn: the filter's panel shows the Landmarks, Apply is next. Paths come from the
+environment (paraview passes no arguments to a script)."""
 import os
 
 import numpy as np

@@ -1,7 +1,7 @@
 """Drives the Add Landmark Pair macro with programmatic point selections, as the GUI's
 selection tools would leave them, and checks the landmarks it makes.
 
-Usage: pvpython test_landmarks_macro.py PLUGIN MESH MACRO OUTPUT_DIR
+Usage: pvpython test_landmarks_macro.py PLUGIN MESH MACRO OUTPUT_DIR [CORRESPONDENCE_MACRO]
 
 The source is MESH, the target MESH turned by a Transform (its own pipeline object): vertex
 i of one is vertex i of the other, so the right pairs are (i, i). Checked: the refusals (no
@@ -10,7 +10,8 @@ target then on the source and the other way round (a pending pick in between, th
 one before the landmark pipelines exist), both at once with the target's point selected on
 the reader under the Transform; the filter's Landmarks property after each run;
 the glyph filters' points and numbers on each mesh; and, after the registration, the
-landmarks' field data and the map at the landmarks.
+landmarks' field data and the map at the landmarks; then that the correspondence macro, if
+given, still finds the two meshes among the pipeline objects the landmark macro adds.
 """
 import os
 import sys
@@ -19,8 +20,9 @@ import numpy as np
 
 from paraview import servermanager
 from paraview.simple import (
-    ClearSelection, CreateView, FindSource, GetLayouts, GetRepresentation, LoadPlugin,
-    OpenDataFile, SaveScreenshot, SelectIDs, SetActiveSource, SetActiveView, Show, Transform)
+    ClearSelection, CreateView, FindSource, GetActiveSource, GetLayouts, GetRepresentation,
+    LoadPlugin, OpenDataFile, SaveScreenshot, SelectIDs, SetActiveSource, SetActiveView, Show,
+    Transform)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 plugin, mesh, macro, output = sys.argv[1:5]
@@ -54,6 +56,11 @@ def stored_ids(side):
     return [int(v) for v in selection.IDs][1::2]
 
 
+def landmark_points(side):
+    """The macro's points of the landmarks on `side` (an ExtractSelection of the mesh)."""
+    return FindSource(f"Landmarks on {side} of MobiusRegistration1")
+
+
 def points(proxy):
     return vtk_to_numpy(servermanager.Fetch(proxy).GetPoints().GetData())
 
@@ -82,7 +89,7 @@ assert len({a, b, c}) == 3, (a, b, c)
 select_points(target, a)
 run_macro()
 assert list(registration.Landmarks) == [] and stored_ids("target") == [a], stored_ids("target")
-assert np.array_equal(points(FindSource("Landmarks on target of MobiusRegistration1")), target_points[[a]])
+assert np.array_equal(points(landmark_points("target")), target_points[[a]])
 layouts = [layout for (name, _), layout in GetLayouts().items()
            if name == "Mobius landmarks: MobiusRegistration1"]
 assert len(layouts) == 1 and None not in [layouts[0].GetView(cell) for cell in (1, 2)], list(GetLayouts())
@@ -103,7 +110,7 @@ run_macro()
 assert list(registration.Landmarks) == [a, a], list(registration.Landmarks)
 assert source.SMProxy.GetSelectionInput(0) is None
 assert stored_ids("source") == [a, b] and stored_ids("target") == [a]
-assert np.array_equal(points(FindSource("Landmarks on source of MobiusRegistration1")), source_points[sorted([a, b])])
+assert np.array_equal(points(landmark_points("source")), source_points[sorted([a, b])])
 select_points(target, b)
 run_macro()
 assert list(registration.Landmarks) == [a, a, b, b], list(registration.Landmarks)
@@ -142,8 +149,8 @@ for side, view, mesh_points in zip(("source", "target"), views, (source_points, 
     colors.append(list(table.IndexedColors))
 assert colors[0] == colors[1] and len(set(map(tuple, np.reshape(colors[0], (-1, 3))))) == 3
 # Each mesh's color map is its own (the same number is another point id on the other mesh).
-tables = [GetRepresentation(FindSource(f"Landmark glyphs on {side} of MobiusRegistration1"), view).LookupTable
-          for side, view in zip(("source", "target"), views)]
+glyphs = [FindSource(f"Landmark glyphs on {side} of MobiusRegistration1") for side in ("source", "target")]
+tables = [GetRepresentation(proxy, view).LookupTable for proxy, view in zip(glyphs, views)]
 assert tables[0] != tables[1]
 SaveScreenshot(os.path.join(output, "landmarks.png"), layouts[0], ImageResolution=[1000, 500])
 
@@ -172,6 +179,17 @@ registration.LandmarkMode = "Exact Moebius Fit"
 registration.UpdatePipeline()
 fields = servermanager.Fetch(registration).GetFieldData()
 exact = vtk_to_numpy(fields.GetArray("LandmarkResidual"))
-assert registration.SMProxy.GetProperty("LandmarkMode").GetElement(0) == 1 and fields.GetArray("LandmarkCount").GetValue(0) == 3
+assert registration.SMProxy.GetProperty("LandmarkMode").GetElement(0) == 1
+assert fields.GetArray("LandmarkCount").GetValue(0) == 3
 assert exact.shape[0] == 3 and np.all(exact < 0.02), exact
 print("Exact Moebius Fit: residuals", exact)
+
+# The correspondence macro counts the readers and sources without input as the loaded meshes:
+# the landmarks' selection sources must not count.
+if len(sys.argv) > 5:
+    SetActiveSource(source)
+    exec(open(sys.argv[5]).read(), dict(globals()))
+    pipeline = GetActiveSource()
+    assert pipeline.GetXMLName() == "MobiusRegistration" and pipeline is not registration
+    assert pipeline.Target is target_reader, pipeline.Target
+    print("the correspondence macro found the two meshes")
