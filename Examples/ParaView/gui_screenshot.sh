@@ -15,7 +15,7 @@ work="$(mktemp -d)"
 # ParaView keeps its Qt settings in $HOME/.config/ParaView/ParaView<version>.ini.
 mkdir -p "$work/home/.config/ParaView"
 # The Output Messages window stays closed when messages come (the macros print theirs there).
-printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\nOutputMessages.AlwaysOpenForNewMessages=false\npqOutputWidget.AlwaysOpenForNewMessages=false\n' \
+printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\nOutputMessages.AlwaysOpenForNewMessages=false\n' \
   > "$work/home/.config/ParaView/ParaView5.11.0.ini"
 Xvfb "$display" -screen 0 1600x1000x24 -noreset > "$work/xvfb.log" 2>&1 &
 xvfb=$!
