@@ -60,10 +60,14 @@ if (NOT CMAKE_INSTALL_PREFIX STREQUAL "/usr")
 endif ()
 
 if (MOBIUS_PARAVIEW)
-  # The correspondence macro (plain paraview.simple Python), for Macros -> Import new macro...
+  # The macros (plain paraview.simple Python), for Macros -> Import new macro...: the
+  # correspondence view, and landmark pairs from point selections.
   set(mobius_macro_destination "${CMAKE_INSTALL_DATADIR}/mobius-registration/macros")
-  install(FILES "${PROJECT_SOURCE_DIR}/Examples/ParaView/MobiusRegistrationPipeline.py"
-    DESTINATION "${mobius_macro_destination}")
+  set(mobius_macros MobiusRegistrationPipeline.py AddLandmarkPair.py)
+  foreach (macro IN LISTS mobius_macros)
+    install(FILES "${PROJECT_SOURCE_DIR}/Examples/ParaView/${macro}"
+      DESTINATION "${mobius_macro_destination}")
+  endforeach ()
 
   # Debian's ParaView 5.11 loads, at start-up and without any environment variable, every
   # plugin in <directory of the executable>/plugins (vtkPVPluginLoader's search path:
@@ -73,7 +77,7 @@ if (MOBIUS_PARAVIEW)
   # directory and a relative link in bin/plugins makes ParaView load it.
   # Its Macros menu likewise lists every file in <directory of the executable>/Macros
   # (pqPythonMacroSupervisor: <app dir>/Macros, <app dir>/../Macros, the user's
-  # ~/.config/ParaView/Macros and PV_MACRO_PATH), so a link in bin/Macros puts the macro
+  # ~/.config/ParaView/Macros and PV_MACRO_PATH), so a link in bin/Macros puts each macro
   # in the menu of every user.
   # AUTO: the links for the /usr prefix (where Debian's ParaView is), decided again
   # whenever the prefix changes.
@@ -100,8 +104,10 @@ if (MOBIUS_PARAVIEW)
     endfunction ()
     mobius_install_relative_link("${CMAKE_INSTALL_BINDIR}/plugins"
       "${CMAKE_INSTALL_LIBDIR}/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so")
-    mobius_install_relative_link("${CMAKE_INSTALL_BINDIR}/Macros"
-      "${mobius_macro_destination}/MobiusRegistrationPipeline.py")
+    foreach (macro IN LISTS mobius_macros)
+      mobius_install_relative_link("${CMAKE_INSTALL_BINDIR}/Macros"
+        "${mobius_macro_destination}/${macro}")
+    endforeach ()
     # Lintian flags folders in /usr/bin; these two are where ParaView looks (the file says why).
     install(FILES "${CMAKE_CURRENT_LIST_DIR}/debian/lintian-overrides"
       DESTINATION "${CMAKE_INSTALL_DATAROOTDIR}/lintian/overrides" RENAME mobius-registration)

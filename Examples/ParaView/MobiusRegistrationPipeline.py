@@ -56,9 +56,11 @@ def has_input(proxy):
 
 
 def loaded_meshes():
-    """The two readers or sources (no input, not this macro's labels), source first."""
+    """The two readers or sources (no input, not this macro's labels, nor selection sources
+    such as the Add Landmark Pair macro's), source first."""
     roots = [proxy for (name, key), proxy in sorted(GetSources().items(), key=lambda item: int(item[0][1]))
-             if not has_input(proxy) and not name.startswith(LABEL_PREFIX)]
+             if not has_input(proxy) and not name.startswith(LABEL_PREFIX)
+             and not proxy.GetXMLName().endswith("SelectionSource")]
     if len(roots) != 2:
         raise RuntimeError("Mobius registration macro: load exactly two meshes first "
                            f"(found {len(roots)} readers or sources)")

@@ -4,7 +4,9 @@
 # Starts its own Xvfb (display :77 unless MOBIUS_GUI_DISPLAY is set) and a ParaView with a
 # private settings folder (a HOME of its own: no welcome dialog, nothing written to the user's settings), runs
 # the macro through gui_screenshot.py, grabs the screen with ImageMagick's `import` and stops
-# both. Needs the packages xvfb and imagemagick.
+# both. Needs the packages xvfb and imagemagick. With
+# MOBIUS_GUI_SCRIPT=Examples/ParaView/gui_screenshot_landmarks.py it picks landmarks with the
+# Add Landmark Pair macro instead (docs/paraview.md's Landmarks picture).
 set -euo pipefail
 build="$1" source_mesh="$2" target_mesh="$3" output="$4"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -12,7 +14,8 @@ display="${MOBIUS_GUI_DISPLAY:-:77}"
 work="$(mktemp -d)"
 # ParaView keeps its Qt settings in $HOME/.config/ParaView/ParaView<version>.ini.
 mkdir -p "$work/home/.config/ParaView"
-printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\n' \
+# The Output Messages window stays closed when messages come (the macros print theirs there).
+printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\nOutputMessages.AlwaysOpenForNewMessages=false\n' \
   > "$work/home/.config/ParaView/ParaView5.11.0.ini"
 Xvfb "$display" -screen 0 1600x1000x24 -noreset > "$work/xvfb.log" 2>&1 &
 xvfb=$!
@@ -27,8 +30,9 @@ sleep 2
 DISPLAY="$display" HOME="$work/home" \
   MOBIUS_PLUGIN="$build/lib/paraview-5.11/plugins/MobiusRegistration/MobiusRegistration.so" \
   MOBIUS_SOURCE="$source_mesh" MOBIUS_TARGET="$target_mesh" \
-  MOBIUS_MACRO="$here/MobiusRegistrationPipeline.py" MOBIUS_DONE="$work/done" \
-  paraview -geometry 1600x1000+0+0 --script="$here/gui_screenshot.py" > "$work/paraview.log" 2>&1 &
+  MOBIUS_MACRO="$here/MobiusRegistrationPipeline.py" MOBIUS_LANDMARK_MACRO="$here/AddLandmarkPair.py" \
+  MOBIUS_DONE="$work/done" \
+  paraview -geometry 1600x1000+0+0 --script="${MOBIUS_GUI_SCRIPT:-$here/gui_screenshot.py}" > "$work/paraview.log" 2>&1 &
 paraview_pid=$!
 for _ in $(seq 1 300); do
   [ -f "$work/done" ] && break

@@ -172,10 +172,13 @@ if args.pvpython:
     for link in installed("bin/plugins/*"):
         check(plugins and os.path.realpath(link) == os.path.realpath(plugins[0]),
               f"{link} does not lead to the installed plugin")
-    macro = os.path.join(prefix, "share/mobius-registration/macros/MobiusRegistrationPipeline.py")
-    check(os.path.isfile(macro), "the install has no ParaView macro")
+    macros = [os.path.join(prefix, "share/mobius-registration/macros", name)
+              for name in ("MobiusRegistrationPipeline.py", "AddLandmarkPair.py")]
+    for macro in macros:
+        check(os.path.isfile(macro), f"the install has no ParaView macro {os.path.basename(macro)}")
     for link in installed("bin/Macros/*"):
-        check(os.path.realpath(link) == os.path.realpath(macro), f"{link} does not lead to the installed macro")
+        check(os.path.realpath(link) in {os.path.realpath(macro) for macro in macros},
+              f"{link} does not lead to an installed macro")
     if plugins:
         script = (
             "import sys\n"
