@@ -3,6 +3,7 @@
 // vtkDenseCorrespondence) on CGAL's cow and bull: the same map, bit for bit, and the
 // stages' field data under their stage names. Errors name the mesh by SourceName.
 #include "MobiusTestUtilities.h"
+#include "vtkCenteredSphericalMap.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
 #include "vtkMobiusCenter.h"
@@ -188,6 +189,43 @@ int CompareWithChain(vtkPolyData* source, vtkPolyData* target, bool refine)
   return failures;
 }
 
+// vtkCenteredSphericalMap, the first stages for one mesh: the stage filters' chain bit for
+// bit, both stages' field data, and the job's rules (a centering degree out of range).
+int CenteredMapMatchesChain(vtkPolyData* mesh)
+{
+  int failures = 0;
+  vtkNew<vtkCenteredSphericalMap> centered;
+  centered->SetInputData(mesh);
+  centered->Update();
+  vtkNew<vtkSphericalConformalMap> map;
+  map->SetInputData(mesh);
+  vtkNew<vtkMobiusCenter> center;
+  center->SetInputConnection(map->GetOutputPort());
+  center->Update();
+  vtkPolyData* output = centered->GetOutput();
+  MOBIUS_EXPECT(output->GetNumberOfPoints() == center->GetOutput()->GetNumberOfPoints());
+  if (failures > 0)
+  {
+    return failures;
+  }
+  failures += ExpectSameArray(
+    output->GetPoints()->GetData(), center->GetOutput()->GetPoints()->GetData(), "centered map");
+  for (const char* name : { "MeanQuasiConformalDistortion", "DegenerateMap", "CenterOfMassNorm" })
+  {
+    MOBIUS_EXPECT(output->GetFieldData()->GetArray(name) != nullptr);
+  }
+  vtkNew<vtkCenteredSphericalMap> misset;
+  misset->SetInputData(mesh);
+  misset->SetCenteringDegree(9);
+  mobius_test::MessageCatcher catcher(misset);
+  mobius_test::MessageCatcher executiveCatcher(misset->GetExecutive());
+  misset->Update();
+  std::cout << "centering degree 9: " << catcher.Error << "\n";
+  MOBIUS_EXPECT(catcher.Error.find("CenteringDegree") != std::string::npos);
+  MOBIUS_EXPECT(misset->GetOutput()->GetNumberOfPoints() == 0);
+  return failures;
+}
+
 // The cow and a turned copy sharing its cell array (as a vtkTransformFilter's output does),
 // mapped side by side on two threads: the same map as on one thread, every time. The two
 // conformal maps read the shared cells at once; through the array's own traversal cursor
@@ -239,6 +277,7 @@ int TestMobiusRegistration(int, char*[])
   failures += CompareWithChain(cow, bull, true);
   failures += CompareWithChain(cow, bull, false);
   failures += SharedCellsSideBySide(cow);
+  failures += CenteredMapMatchesChain(cow);
 
   // An open source mesh: an error naming it and the property that closes holes.
   vtkNew<vtkPolyData> open;
