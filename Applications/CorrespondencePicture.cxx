@@ -1,11 +1,11 @@
 #include "CorrespondencePicture.h"
 
+#include "MobiusPullBack.h"
+
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCellLocator.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
-#include "vtkGenericCell.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
@@ -127,41 +127,6 @@ vtkSmartPointer<vtkPolyData> OnSurface(vtkPolyData* map)
 }
 }
 
-void PullBackColors(vtkPolyData* placed, vtkPolyData* target)
-{
-  vtkDataArray* sourceColors = placed->GetPointData()->GetArray("PositionColor");
-  vtkNew<vtkCellLocator> locator;
-  locator->SetDataSet(placed);
-  locator->BuildLocator();
-  vtkNew<vtkFloatArray> colors;
-  colors->SetName("PositionColor");
-  colors->SetNumberOfComponents(3);
-  colors->SetNumberOfTuples(target->GetNumberOfPoints());
-  vtkNew<vtkGenericCell> cell;
-  for (vtkIdType i = 0; i < target->GetNumberOfPoints(); ++i)
-  {
-    double point[3], closest[3], parametric[3], weights[3] = { 0, 0, 0 }, distance2 = 0;
-    target->GetPoint(i, point);
-    vtkIdType cellId = -1;
-    int subId = 0;
-    locator->FindClosestPoint(point, closest, cell, cellId, subId, distance2);
-    double color[3] = { 0, 0, 0 };
-    if (cellId >= 0 && cell->GetNumberOfPoints() == 3)
-    {
-      cell->EvaluatePosition(closest, nullptr, subId, parametric, distance2, weights);
-      for (int corner = 0; corner < 3; ++corner)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          color[k] += weights[corner] * sourceColors->GetComponent(cell->GetPointId(corner), k);
-        }
-      }
-    }
-    colors->SetTuple(i, color);
-  }
-  target->GetPointData()->AddArray(colors);
-}
-
 bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* targetMap,
   vtkPolyData* correspondence, std::string& png, std::string& error, int width, int height)
 {
@@ -183,21 +148,14 @@ bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* target
     error = "the correspondence has no MappedPoints for every source vertex";
     return false;
   }
-  vtkNew<vtkPolyData> placed;
-  placed->CopyStructure(source);
-  vtkNew<vtkPoints> placedPoints;
-  placedPoints->SetData(mapped);
-  placed->SetPoints(placedPoints);
-  placed->GetPointData()->AddArray(source->GetPointData()->GetArray("PositionColor"));
   // The target's own mesh, with the colors pulled back from the placed source: where the
   // map is many-to-one the placed source folds over itself, the target's mesh does not.
-  if (!targetMap || !targetMap->GetPointData()->GetArray("SurfacePoints"))
+  vtkNew<vtkPolyData> target;
+  if (!targetMap || !mobius::vtk::PullBackToTarget(source, mapped, targetMap, target))
   {
-    error = "the target's map has no SurfacePoints";
+    error = "the map could not be shown on the target's own mesh";
     return false;
   }
-  auto target = OnSurface(targetMap);
-  PullBackColors(placed, target);
 
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);

@@ -21,10 +21,4 @@ bool RenderCorrespondencePicture(vtkPolyData* alignedSource, vtkPolyData* target
   vtkPolyData* correspondence, std::string& png, std::string& error, int width = 1200,
   int height = 600);
 
-/// Adds to `target` the point array "PositionColor" pulled back from `placed` (the source
-/// mesh with its points where the map sends them, on the target's surface, and its own
-/// "PositionColor"): each target vertex takes the color interpolated at the closest point
-/// of the placed source.
-void PullBackColors(vtkPolyData* placed, vtkPolyData* target);
-
 #endif

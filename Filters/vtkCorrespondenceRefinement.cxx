@@ -380,8 +380,8 @@ void AddRefinementFieldData(const mobius::RefinedCorrespondence& refined, const 
   {
     mobius::vtk::SetFieldValues(fieldData, "RefinementStageSeconds", stageSeconds, 4);
   }
-  const double storedBases[2] = { stored[0] ? 1.0 : 0.0, stored[1] ? 1.0 : 0.0 };
-  mobius::vtk::SetFieldValues(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
+  const int storedBases[2] = { stored[0] ? 1 : 0, stored[1] ? 1 : 0 };
+  mobius::vtk::SetFieldIntegers(fieldData, "RefinementStoredBasisUsed", storedBases, 2);
   SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
 }
 }

@@ -1,6 +1,7 @@
 #include "vtkMobiusRegistration.h"
 
 #include "MobiusPipeline.h"
+#include "MobiusPullBack.h"
 #include "ParameterRules.h"
 #include "RegistrationParameters.h"
 
@@ -12,6 +13,7 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
@@ -121,7 +123,8 @@ double StageStart(const std::string& stage, double& length)
 vtkMobiusRegistration::vtkMobiusRegistration()
 {
   this->SetNumberOfInputPorts(2);
-  this->SetNumberOfOutputPorts(3); // the correspondence, the two centered maps aligned
+  // The correspondence, the two centered maps aligned, the map on the target's own mesh.
+  this->SetNumberOfOutputPorts(4);
   const mobius::RegistrationParameters defaults;
   this->InputsAreCenteredMaps = defaults.InputsAreCenteredMaps;
   this->FillHoles = defaults.FillHoles;
@@ -262,6 +265,14 @@ int vtkMobiusRegistration::ComputeOutput(
   if (vtkPolyData* targetSphere = vtkPolyData::GetData(outputVector, 2))
   {
     targetSphere->ShallowCopy(result.TargetCentered);
+  }
+  vtkPolyData* pulledBack = vtkPolyData::GetData(outputVector, 3);
+  if (pulledBack &&
+    !mobius::vtk::PullBackToTarget(result.Aligned,
+      result.Correspondence->GetPointData()->GetArray("MappedPoints"), result.TargetCentered,
+      pulledBack))
+  {
+    vtkWarningMacro(<< "The map could not be shown on the target's own mesh (output 3).");
   }
   this->UpdateProgress(1.0);
   return 1;

@@ -25,6 +25,12 @@
  * map turned by the rotational alignment (vtkSO3Register's output, with the source's point
  * arrays); port 2, the target's centered spherical map (vtkMobiusCenter's output).
  *
+ * Port 3 shows the map on the target's own mesh, where the source placed by the map (port
+ * 0) may fold over itself: the target's surface and point arrays, and per vertex where on
+ * the source it comes from (its closest point on the placed source): `SourceCellId`,
+ * `SourceBarycentric`, `SourcePoints`, `SourceInputPointIds` and the source's point arrays
+ * carried back. Color it by a source array to see what the map carries over.
+ *
  * Landmarks (AddLandmark): pairs of a source vertex and the target vertex it must go to,
  * for shapes too symmetric or too different for the automatic map. Every stage keeps them:
  * the rotational alignment chooses the transform that brings their sphere points together

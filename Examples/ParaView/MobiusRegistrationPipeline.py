@@ -11,9 +11,9 @@ centering of each mesh, rotational alignment, refined correspondence) with its d
 and opens a new layout tab "Mobius correspondence N" with linked render views side by side:
   - left, the source, colored by its position (red-green-blue from x-y-z), or by the point
     array it is colored by in the active view when the macro runs;
-  - middle, the map's result: every source vertex placed where the map sends it on the
-    target surface, keeping its color, so the same colors on both sides mean corresponding
-    points;
+  - middle, the map's result: the target's own mesh (the filter's output port 3) in the
+    colors the map carries over from the source, so the same colors on both sides mean
+    corresponding points;
   - right (SHOW_SPHERES), the two centered spherical maps side by side (the filter's output
     ports 1 and 2), the source's turned by the rotational alignment, in the same colors.
 The target is the other mesh without an input in the pipeline; if the selected mesh is not
@@ -131,7 +131,8 @@ def build_pipeline():
 
     # The Möbius map refined spectrally (from every candidate rotation): the accurate map.
     # Its output is the source's connectivity and point arrays at the mapped points; ports
-    # 1 and 2 are the source's centered map turned by the alignment and the target's.
+    # 1 and 2 are the source's centered map turned by the alignment and the target's, port 3
+    # the target's mesh with the source's arrays carried back.
     correspondence = plugin_filter("MobiusRegistration")(Source=colored, Target=target)
 
     previous = GetActiveView()
@@ -156,7 +157,10 @@ def build_pipeline():
 
     show_colored(colored, views[0], array)
     label(views[0], "source", number)
-    show_colored(correspondence, views[1], array)
+    # Port 3: the target's own mesh, each vertex with the source's arrays where the map
+    # comes from (port 0, the source placed on the target, folds where the map is
+    # many-to-one).
+    show_colored(OutputPort(correspondence, 3), views[1], array)
     label(views[1], "target: the source's colors, carried by the map", number)
     # The source and the target are seen from the same side.
     AddCameraLink(views[0], views[1], f"Mobius correspondence {number}")

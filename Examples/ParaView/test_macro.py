@@ -80,9 +80,9 @@ def check_layout(number, correspondence, shown_source, array, direct_colors):
     views = [layouts[0].GetView(cell) for cell in (1, 5, 6)]  # the macro's cells
     assert all(v is not None for v in views), views
     views = [servermanager._getPyProxy(v) for v in views]
-    # The same coloring array on the source and on the mapped source.
-    # The spheres' view shows the aligned source sphere, the filter's port 1.
-    for view, proxy, port in ((views[0], shown_source, 0), (views[1], correspondence, 0),
+    # The same coloring array on the source and on the target's own mesh (the filter's port
+    # 3). The spheres' view shows the aligned source sphere, the filter's port 1.
+    for view, proxy, port in ((views[0], shown_source, 0), (views[1], correspondence, 3),
                               (views[2], correspondence, 1)):
         display = shown_port(view, proxy, port)
         assert display is not None and display.Visibility, (number, proxy.GetXMLName(), port)
@@ -94,6 +94,14 @@ def check_layout(number, correspondence, shown_source, array, direct_colors):
     shown = servermanager.Fetch(shown_source).GetPointData().GetArray(array)
     mapped = servermanager.Fetch(correspondence).GetPointData().GetArray(array)
     assert mapped is not None and (vtk_to_numpy(mapped) == vtk_to_numpy(shown)).all()
+    # On the target's own mesh they are carried back: the meshes are one surface with one
+    # numbering, so each target vertex takes (nearly) the value of its own source vertex.
+    on_target = servermanager.Fetch(correspondence, idx=3).GetPointData().GetArray(array)
+    assert on_target is not None and on_target.GetNumberOfTuples() == shown.GetNumberOfTuples()
+    values = vtk_to_numpy(shown).reshape(shown.GetNumberOfTuples(), -1)
+    spread = np.ptp(values, axis=0).max()
+    differences = np.abs(vtk_to_numpy(on_target).reshape(values.shape) - values).max(axis=1)
+    assert np.median(differences) < 0.01 * spread, (np.median(differences), spread)
     SaveScreenshot(os.path.join(output, f"macro_{number}.png"), layouts[0], ImageResolution=[1200, 400])
 
 

@@ -114,8 +114,8 @@ def share_of_cores():
 
 
 from mobiusregistration import (  # noqa: E402
-    FilterMessages, vtkLaplaceBeltramiBasis, vtkMobiusCenter, vtkMobiusRegistration,
-    vtkSphericalConformalMap, vtkSphericalScaleGrid, vtkSurfaceMeshReader)
+    FilterMessages, vtkCenteredSphericalMap, vtkLaplaceBeltramiBasis, vtkMobiusRegistration,
+    vtkSphericalScaleGrid, vtkSurfaceMeshReader)
 from vtkmodules.util import numpy_support  # noqa: E402
 from vtkmodules.vtkCommonCore import (  # noqa: E402
     vtkDoubleArray, vtkLookupTable, vtkStringArray, vtkUnsignedCharArray)
@@ -280,25 +280,20 @@ def map_shape(i):
     errors = FilterMessages()
     reader = errors.watch(vtkSurfaceMeshReader())
     reader.SetFileName(meshes[i])
-    conformal = errors.watch(vtkSphericalConformalMap())
-    conformal.SetInputConnection(reader.GetOutputPort())
-    center = errors.watch(vtkMobiusCenter())
-    center.SetInputConnection(conformal.GetOutputPort())
+    # The first stages of every registration job (a degenerate conformal map is an error,
+    # with its reason), then the shape's descriptor.
+    center = errors.watch(vtkCenteredSphericalMap())
+    center.SetMeshName(os.path.basename(meshes[i]))
+    center.SetInputConnection(reader.GetOutputPort())
     grid = errors.watch(vtkSphericalScaleGrid())
     grid.SetInputConnection(center.GetOutputPort())
     grid.SetResolution(SHAPE_PARAMETERS["descriptor_resolution"])
     grid.SetNumberOfThreads(threads)
     grid.Update()
     record = {"status": "failed", "error": "", "vertices": 0, "energies": [], "rank": rank}
-    mapped = conformal.GetOutput()
     basis_seconds = 0.0
     if errors.messages or center.GetOutput().GetNumberOfPoints() == 0:
         record["error"] = "; ".join(errors.messages) or "no output"
-    elif field_value(mapped, "DegenerateMap") == 1:
-        # A degenerate map (flips left, collapsed area, no convergence) would give meaningless
-        # correspondences: a failure, with the filter's reason.
-        reason = mapped.GetFieldData().GetAbstractArray("DegenerateMapReason")
-        record["error"] = "degenerate conformal map: " + (reason.GetValue(0) if reason else "unknown reason")
     else:
         energies = grid.GetOutput().GetFieldData().GetArray("DegreeEnergies")
         record.update(status="ok", vertices=center.GetOutput().GetNumberOfPoints(),

@@ -90,17 +90,18 @@ vtkIdType NonFiniteValues(vtkAbstractArray* array)
 }
 
 std::string AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
-  const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output)
+  const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output,
+  const LocatedNames& names)
 {
   std::string warning;
   output->ShallowCopy(queryMesh);
   vtkPointData* outPD = output->GetPointData();
 
   vtkNew<vtkIdTypeArray> cellIds;
-  cellIds->SetName("TargetCellId");
+  cellIds->SetName((names.Prefix + "CellId").c_str());
   cellIds->SetNumberOfTuples(static_cast<vtkIdType>(locations.Triangle.size()));
   vtkNew<vtkDoubleArray> barycentric;
-  barycentric->SetName("TargetBarycentric");
+  barycentric->SetName((names.Prefix + "Barycentric").c_str());
   barycentric->SetNumberOfComponents(3);
   barycentric->SetNumberOfTuples(static_cast<vtkIdType>(locations.Triangle.size()));
   for (size_t q = 0; q < locations.Triangle.size(); ++q)
@@ -110,7 +111,7 @@ std::string AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedM
   }
   auto mapped =
     Transfer(locatedMesh->GetPointData()->GetArray(SurfacePointsArrayName), locations);
-  mapped->SetName("MappedPoints");
+  mapped->SetName(names.MappedPoints.c_str());
   for (int a = 0; a < locatedMesh->GetPointData()->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* array = locatedMesh->GetPointData()->GetAbstractArray(a);
@@ -126,12 +127,12 @@ std::string AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedM
         "a point mapped next to one of them gets NaN or infinity in that array";
     }
     auto transferred = Transfer(array, locations);
-    // The target's InputPointId always gets the suffix: under its own name it would pass
-    // for the source's numbering.
+    // The located mesh's InputPointId always gets the suffix: under its own name it would
+    // pass for the query mesh's numbering.
     if (outPD->HasArray(array->GetName()) ||
       std::string(array->GetName()) == InputPointIdArrayName)
     {
-      transferred->SetName((std::string(array->GetName()) + "_Target").c_str());
+      transferred->SetName((std::string(array->GetName()) + "_" + names.Prefix).c_str());
     }
     outPD->AddArray(transferred);
   }
@@ -139,13 +140,13 @@ std::string AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedM
   outPD->AddArray(barycentric);
   outPD->AddArray(mapped);
   // TargetCellId names a triangle of the target map, whose point numbering repairs changed:
-  // give its vertices in the target's input (file) numbering too.
+  // give its vertices in the target's input (file) numbering too (the same for the source).
   vtkDataArray* targetIds = locatedMesh->GetPointData()->GetArray(InputPointIdArrayName);
   if (targetIds && targetIds->GetNumberOfComponents() == 1 &&
     targetIds->GetNumberOfTuples() == locatedMesh->GetNumberOfPoints())
   {
     vtkNew<vtkIdTypeArray> cornerIds;
-    cornerIds->SetName("TargetInputPointIds");
+    cornerIds->SetName((names.Prefix + "InputPointIds").c_str());
     cornerIds->SetNumberOfComponents(3);
     cornerIds->SetNumberOfTuples(static_cast<vtkIdType>(locations.Triangle.size()));
     for (size_t q = 0; q < locations.Triangle.size(); ++q)

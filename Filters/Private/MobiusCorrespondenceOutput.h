@@ -15,6 +15,7 @@
 
 #include "MeshTypes.h"
 
+#include <string>
 #include <vector>
 
 class vtkPolyData;
@@ -30,13 +31,24 @@ struct SurfaceLocations
   std::vector<Eigen::Vector3d> Barycentric;
 };
 
+/// What the output calls the located mesh's data: "Target" for a map onto the target
+/// (`TargetCellId`, `TargetBarycentric`, `TargetInputPointIds`, a clash suffix `_Target`,
+/// and `MappedPoints`); the pull-back onto the target's own mesh (MobiusPullBack.h) names
+/// the source the same way.
+struct LocatedNames
+{
+  std::string Prefix = "Target";
+  std::string MappedPoints = "MappedPoints";
+};
+
 /// Fills `output` as described above. `pointsOnTarget` places the output's points at the
 /// mapped positions, otherwise at the query mesh's own `SurfacePoints`. Returns a warning
 /// for the filter to give, or an empty string: a floating-point array of the located mesh
 /// that holds NaN or infinite values, which interpolation carries into the output (a NaN
 /// corner makes the mapped value NaN).
 std::string AssembleCorrespondence(vtkPolyData* queryMesh, vtkPolyData* locatedMesh,
-  const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output);
+  const SurfaceLocations& locations, bool pointsOnTarget, vtkPolyData* output,
+  const LocatedNames& names = LocatedNames());
 }
 }
 

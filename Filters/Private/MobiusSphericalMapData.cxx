@@ -309,18 +309,33 @@ void SetTriangles(vtkPolyData* output, const Triangles& triangles)
   output->SetPolys(polys);
 }
 
-void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count)
+namespace
 {
-  vtkNew<vtkDoubleArray> array;
+// One tuple of `count` components.
+template <typename ArrayType, typename Value>
+void SetOneTuple(vtkFieldData* fieldData, const char* name, const Value* values, int count)
+{
+  vtkNew<ArrayType> array;
   array->SetName(name);
   array->SetNumberOfComponents(count);
   array->SetNumberOfTuples(1);
   for (int k = 0; k < count; ++k)
   {
-    array->SetComponent(0, k, values[k]);
+    array->SetTypedComponent(0, k, values[k]);
   }
   fieldData->RemoveArray(name);
   fieldData->AddArray(array);
+}
+}
+
+void SetFieldValues(vtkFieldData* fieldData, const char* name, const double* values, int count)
+{
+  SetOneTuple<vtkDoubleArray>(fieldData, name, values, count);
+}
+
+void SetFieldIntegers(vtkFieldData* fieldData, const char* name, const int* values, int count)
+{
+  SetOneTuple<vtkIntArray>(fieldData, name, values, count);
 }
 
 void SetFieldValue(vtkFieldData* fieldData, const char* name, double value)
@@ -328,28 +343,14 @@ void SetFieldValue(vtkFieldData* fieldData, const char* name, double value)
   SetFieldValues(fieldData, name, &value, 1);
 }
 
-namespace
-{
-template <typename ArrayType, typename Value>
-void SetOneValue(vtkFieldData* fieldData, const char* name, Value value)
-{
-  vtkNew<ArrayType> array;
-  array->SetName(name);
-  array->SetNumberOfTuples(1);
-  array->SetValue(0, value);
-  fieldData->RemoveArray(name);
-  fieldData->AddArray(array);
-}
-}
-
 void SetFieldInteger(vtkFieldData* fieldData, const char* name, int value)
 {
-  SetOneValue<vtkIntArray>(fieldData, name, value);
+  SetOneTuple<vtkIntArray>(fieldData, name, &value, 1);
 }
 
 void SetFieldCount(vtkFieldData* fieldData, const char* name, vtkIdType value)
 {
-  SetOneValue<vtkIdTypeArray>(fieldData, name, value);
+  SetOneTuple<vtkIdTypeArray>(fieldData, name, &value, 1);
 }
 
 void AddDistortionArrays(vtkPolyData* map, const char* active)

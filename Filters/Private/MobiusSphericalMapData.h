@@ -108,6 +108,8 @@ void SetFieldValue(vtkFieldData* fieldData, const char* name, double value);
 /// of mesh elements (points, vertices, triangles, edges) in a vtkIdTypeArray.
 void SetFieldInteger(vtkFieldData* fieldData, const char* name, int value);
 void SetFieldCount(vtkFieldData* fieldData, const char* name, vtkIdType value);
+/// Several integers (flags or settings, e.g. one per input) in one tuple of a vtkIntArray.
+void SetFieldIntegers(vtkFieldData* fieldData, const char* name, const int* values, int count);
 }
 }
 
