@@ -25,8 +25,7 @@
 //
 // Measured (README, Accuracy): on rotated re-triangulated copies the mean error falls from
 // 4.9e-3..7.9e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a fifth to a half, on
-// SMPL's man -> woman (not isometric: different bodies) from 0.0082 to 0.0038; 15 iterations
-// cost about a sixth of the refinement on a 17,500-vertex mesh.
+// SMPL's man -> woman (not isometric: different bodies) by more than half.
 #ifndef mobius_SurfacePolish_h
 #define mobius_SurfacePolish_h
 
@@ -43,11 +42,14 @@ namespace mobius
 {
 struct SurfacePolishParameters
 {
-  int Iterations = 15;
+  /// Slides of whole parts along the target converge slowly (see above): more iterations
+  /// keep lowering the error of real pose pairs up to about this many, at a cost small
+  /// beside the refinement's (docs/accuracy.md, "Where the remaining FAUST_r error is").
+  int Iterations = 60;
   /// Weight of the closest-point term per vertex, against the ARAP energy (whose weights
   /// per vertex sum to about 2-4 on a regular mesh): of order 1 balances the two at the
   /// scale of an edge.
-  double Fit = 0.3;
+  double Fit = 1.0;
   /// Weight of the pull back to the spectral map: small, it only keeps directions the
   /// geometry does not fix (sliding along a featureless cylinder) where they were.
   double Anchor = 0.005;
