@@ -1,6 +1,7 @@
 #include "vtkCenteredSphericalMap.h"
 
 #include "MobiusPipeline.h"
+#include "MobiusSphericalMapOptions.h"
 #include "ParameterRules.h"
 #include "RegistrationParameters.h"
 
@@ -48,13 +49,7 @@ int vtkCenteredSphericalMap::ComputeOutput(
   }
   // The job's parameters: the ones of this filter, the rest at their defaults.
   mobius::RegistrationParameters options;
-  options.FillHoles = this->FillHoles;
-  options.KeepLargestComponent = this->KeepLargestComponent;
-  options.AllowPoorMaps = this->AllowPoorMaps;
-  options.FlowIterations = this->MaximumNumberOfIterations;
-  options.FlowTolerance = this->ConvergenceTolerance;
-  options.CenterBetweenSteps = this->CenterBetweenSteps;
-  options.CenteringDegree = this->CenteringDegree;
+  mobius::vtk::CopySphericalMapOptions(this, options);
   const std::string outOfRange =
     mobius::CheckRegistrationParameters(options, mobius::ParameterNaming::Filter);
   if (!outOfRange.empty())

@@ -1,6 +1,7 @@
 #include "vtkMobiusRegistration.h"
 
 #include "MobiusPipeline.h"
+#include "MobiusSphericalMapOptions.h"
 #include "MobiusPullBack.h"
 #include "ParameterRules.h"
 #include "RegistrationParameters.h"
@@ -49,13 +50,7 @@ mobius::RegistrationParameters ParametersOf(vtkMobiusRegistration* filter)
 {
   mobius::RegistrationParameters options;
   options.InputsAreCenteredMaps = filter->GetInputsAreCenteredMaps();
-  options.FillHoles = filter->GetFillHoles();
-  options.KeepLargestComponent = filter->GetKeepLargestComponent();
-  options.AllowPoorMaps = filter->GetAllowPoorMaps();
-  options.FlowIterations = filter->GetMaximumNumberOfIterations();
-  options.FlowTolerance = filter->GetConvergenceTolerance();
-  options.CenterBetweenSteps = filter->GetCenterBetweenSteps();
-  options.CenteringDegree = filter->GetCenteringDegree();
+  mobius::vtk::CopySphericalMapOptions(filter, options);
   options.Resolution = filter->GetResolution();
   options.SmoothingTime = filter->GetSmoothingTime();
   options.TransformMode = filter->GetTransformMode();

@@ -118,8 +118,10 @@ struct SampleAnchor
 
 /// How many ordinary samples a landmark weighs in the functional map's fit: enough for a few
 /// landmarks to steer the low frequencies against a thousand samples that follow a wrong
-/// start, not so much that an imprecise landmark bends the whole map.
-constexpr double kPinnedSampleWeight = 20.0;
+/// start (at 1, CGAL's man onto a stretched copy stays wrong), not so much that the fit bends
+/// the rest of a non-isometric map towards them (from 8 on, some generated pairs come out
+/// worse with 5 exact landmarks than without; docs/landmarks.md, "Measured").
+constexpr double kPinnedSampleWeight = 5.0;
 
 /// Adds `vertices` (landmarks) to the surface's samples where they are not samples yet, and
 /// makes each the nearest sample of its own vertex.
