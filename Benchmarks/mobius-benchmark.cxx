@@ -619,6 +619,7 @@ int main(int argc, char* argv[])
       vtkSmartPointer<vtkPolyData> refined;
       const double seconds = TimeMedian(repeat, [&] {
         vtkNew<vtkCorrespondenceRefinement> refinement;
+        refinement->RecordTimingsOn(); // the stage columns below
         refinement->SetSourceConnection(registration->GetOutputPort());
         refinement->SetTargetConnection(targetCentered->GetOutputPort());
         refinement->Update();
