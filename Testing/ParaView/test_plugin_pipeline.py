@@ -76,3 +76,24 @@ assert whole_result.GetNumberOfPoints() == result.GetNumberOfPoints()
 assert all(whole_mapped.GetTuple3(k) == mapped.GetTuple3(k) for k in range(result.GetNumberOfPoints()))
 assert [field(whole, "Registration.Rotation", k) for k in range(9)] == rotation
 print("Mobius Registration: the chain's map, bit for bit")
+
+# The stage filters take landmarks by the same property (point ids of their input maps): SO3
+# Register orders its candidates by the landmarks' sphere angles, Dense Correspondence and
+# Refine Correspondence put each source landmark exactly on its target point.
+pairs = [(0, 0), (400, 400), (900, 900)]
+flat = [i for pair in pairs for i in pair]
+guided = SO3Register(Source=centered, Target=turned_centered, Resolution=64, Landmarks=flat)
+guided_data = servermanager.Fetch(guided).GetFieldData()
+angles = guided_data.GetArray("CandidateLandmarkAngles")
+assert angles is not None and angles.GetNumberOfTuples() >= 1, "no CandidateLandmarkAngles"
+assert all(angles.GetValue(0) <= angles.GetValue(k) for k in range(angles.GetNumberOfTuples()))
+for stage in (DenseCorrespondence(Source=guided, Target=turned_centered, Landmarks=flat),
+              RefineCorrespondence(Source=guided, Target=turned_centered, Landmarks=flat)):  # noqa: F821
+    data = servermanager.Fetch(stage)
+    stage_mapped = data.GetPointData().GetArray("MappedPoints")
+    stage_ids = data.GetPointData().GetArray("InputPointId")
+    rows = {int(stage_ids.GetTuple1(k)): k for k in range(data.GetNumberOfPoints())}
+    for source_id, target_id in pairs:
+        gap = math.dist(stage_mapped.GetTuple3(rows[source_id]), truth.GetPoint(target_id))
+        assert gap <= 1e-9 * diagonal, (stage.GetXMLName(), source_id, gap)
+print("landmarks on SO3 Register, Dense Correspondence and Refine Correspondence: respected")

@@ -31,13 +31,19 @@ xml_dir = os.environ["MOBIUS_PLUGIN_XML_DIR"]
 checked = 0
 # The XMLs as the plugin is built from them: a template (NAME.xml.in) gets the properties
 # the filters share (xml/Shared) where CMake puts them.
-with open(os.path.join(xml_dir, "Shared", "NumberOfThreads.xml")) as f:
-    shared = {"@MOBIUS_NUMBER_OF_THREADS_PROPERTY@": f.read()}
+# (Shared/LandmarkMode.xml at @MOBIUS_LANDMARK_MODE_PROPERTY@, as Plugin/CMakeLists.txt does).
+shared = {}
+for snippet in glob.glob(os.path.join(xml_dir, "Shared", "*.xml")):
+    name = re.sub(r"([a-z])([A-Z])", r"\1_\2", os.path.basename(snippet)[:-len(".xml")]).upper()
+    with open(snippet) as f:
+        shared[f"@MOBIUS_{name}_PROPERTY@"] = f.read()
 for path in sorted(glob.glob(os.path.join(xml_dir, "*.xml")) + glob.glob(os.path.join(xml_dir, "*.xml.in"))):
     with open(path) as f:
         text = f.read()
     for placeholder, snippet in shared.items():
         text = text.replace(placeholder, snippet)
+    if "@MOBIUS_" in text:
+        failures.append(f"{os.path.basename(path)}: a placeholder with no Shared snippet")
     for proxy in ElementTree.fromstring(text).iter("SourceProxy"):
         filter_class = getattr(filters, proxy.get("class"), None)
         if filter_class is None:
