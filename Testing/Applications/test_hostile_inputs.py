@@ -279,6 +279,12 @@ counts = {
     "vtp offsets decreasing": ("c18.vtp", vtp_tetra.replace("3 6 9 12", "3 9 6 12"), ["offset"]),
     "vtp a billion components": ("c19.vtp", vtp_tetra.replace('NumberOfComponents="3"', 'NumberOfComponents="1000000000"'),
                                  ["components"]),
+    "vtp points with 1 component": ("c40.vtp", vtp_tetra.replace('NumberOfComponents="3"', 'NumberOfComponents="1"'),
+                                    ["1 components per point", "not 3"]),
+    # Found by the fuzzer: a search of the text for NumberOfComponents="3" matched here.
+    "vtp points' components inside a longer attribute": (
+        "c41.vtp", vtp_tetra.replace('NumberOfComponents="3"', 'ComponentName0NumberOfComponents="3"'),
+        ["1 components per point", "not 3"]),
     "stl no triangles": ("c20.stl", (b"x" * 80 + struct.pack("<I", 0)).decode(), ["no triangles"]),
     "obj no faces": ("c21.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", ["no triangles"]),
     "off no faces": ("c22.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", ["no triangles"]),
@@ -286,6 +292,12 @@ counts = {
 }
 for label, (name, text, expected) in counts.items():
     expect_error(label, write(name, text.encode()), expected)
+# XML allows spaces around '=' and single quotes: the points' component count is read as VTK
+# reads it, so this spelling is not refused.
+vtp_lumpy = bytes_of("vtp-ascii", lumpy).decode()
+expect_result("vtp NumberOfComponents = '3'",
+              write("c42.vtp", vtp_lumpy.replace('NumberOfComponents="3"', "NumberOfComponents = '3'").encode()),
+              lumpy[0])
 expect_error("ply float vertex indices",
              write("c30.ply", ply_tetra.replace("list uchar int vertex_indices", "list uchar float vertex_indices")
                    .encode()), ["floating-point", "integer type"])
