@@ -12,9 +12,9 @@
  * |mu| decrease, so it converges on hard inputs too (typically in 3-7 steps).
  *
  * Input: a spherical map, i.e. a vtkPolyData of triangles with every point on the unit
- * sphere (radius within 1e-6 of 1) and the cell array `SurfaceArea` (finite, positive), as
- * made by vtkSphericalConformalMap. An input with no polygons is treated as a point set on
- * the sphere with unit weights (mu is then the mean of the points).
+ * sphere (radius within 1e-6 of 1) and the cell array `SurfaceArea` (finite, not negative,
+ * not all 0), as made by vtkSphericalConformalMap. An input with no polygons is treated as a
+ * point set on the sphere with unit weights (mu is then the mean of the points).
  *
  * Output: the input with its points moved by the centering transformation; connectivity and
  * every point, cell and field array are passed through. Cell data recomputed for the centered

@@ -126,7 +126,8 @@ std::string PrepareFlowMesh(
   {
     vtkWarningWithObjectMacro(filter, << "The output has " << mesh.Points.rows()
                                       << " points, the input " << input->GetNumberOfPoints()
-                                      << " (duplicates merged, unused points dropped, holes filled).");
+                                      << " (duplicates merged, zero-length edges collapsed, "
+                                         "unused points dropped, holes filled).");
   }
   flowMesh.ReversedTriangles = mobius::FaceOutward(mesh.Points, mesh.Triangles);
   mobius::TriangleAreasAtScale(
@@ -210,6 +211,7 @@ void AddMapFieldData(const mobius::ConformalMapResult& result, const FlowMesh& f
   SetFieldInteger(fieldData, "IntrinsicDelaunayUsed", result.IntrinsicDelaunayUsed ? 1 : 0);
   SetFieldCount(fieldData, "IntrinsicDelaunayFlips", static_cast<vtkIdType>(result.IntrinsicFlips));
   SetFieldCount(fieldData, "MergedDuplicatePoints", static_cast<vtkIdType>(mesh.MergedDuplicatePoints));
+  SetFieldCount(fieldData, "CollapsedEdges", static_cast<vtkIdType>(mesh.CollapsedEdges));
   SetFieldInteger(fieldData, "FilledHoles", static_cast<int>(mesh.FilledHoles));
   SetFieldInteger(fieldData, "ReversedTriangleOrientation", flowMesh.ReversedTriangles ? 1 : 0);
   SetFieldCount(

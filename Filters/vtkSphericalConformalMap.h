@@ -14,9 +14,10 @@
  *
  * Input: a vtkPolyData surface. Polygons with more than three points and triangle strips
  * are triangulated; points with exactly equal coordinates (a triangle soup, STL files) are
- * merged; triangles are reoriented consistently, and reversed if they face inward. The
- * mesh must then be a closed, edge- and vertex-manifold, connected surface of genus 0,
- * with finite coordinates and no zero-area triangles; otherwise the filter fails with an
+ * merged; an edge whose two ends are at one position is collapsed (its triangles, which have
+ * no area, are dropped); triangles are reoriented consistently, and reversed if they face
+ * inward. The mesh must then be a closed, edge- and vertex-manifold, connected surface of
+ * genus 0 with finite coordinates; otherwise the filter fails with an
  * error naming every problem found (holes, non-manifold edges or vertices, components,
  * genus). Options repair two of them: FillHoles closes boundary loops,
  * KeepLargestComponent drops all but the largest connected component.
@@ -47,7 +48,8 @@
  *   share of the surface in triangles of distortion above 10), `SmallestSphereAreaShare`
  *   (the smallest spherical triangle's area over 4 pi),
  *   `AreaDistortionRange` (2 doubles: min and max of spherical share / surface share of
- *   area per triangle), `IntrinsicDelaunayUsed` (0/1), `IntrinsicDelaunayFlips`, `MergedDuplicatePoints`, `FilledHoles`,
+ *   area per triangle), `IntrinsicDelaunayUsed` (0/1), `IntrinsicDelaunayFlips`,
+ *   `MergedDuplicatePoints`, `CollapsedEdges` (zero-length edges), `FilledHoles`,
  *   `ReversedTriangleOrientation` (0/1), `FlipRepairMovedVertices`,
  *   `SqueezedRegionRefinementFailed` (0/1), `DegenerateMap` (0/1),
  *   `DegenerateMapReason` (a string, empty for a good map) and `MapWarning` (a string, empty

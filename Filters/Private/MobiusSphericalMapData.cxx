@@ -172,11 +172,11 @@ std::string ExtractSurfaceAreas(vtkPolyData* input, Vector& areas)
   for (vtkIdType t = 0; t < count; ++t)
   {
     const double area = array->GetComponent(offset + t, 0);
-    if (!std::isfinite(area) || area <= 0)
+    if (!std::isfinite(area) || area < 0)
     {
       std::ostringstream error;
       error << "cell array '" << SurfaceAreaArrayName << "' has an invalid value " << area
-            << " at triangle " << t << "; areas must be finite and positive";
+            << " at triangle " << t << "; areas must be finite and not negative";
       return error.str();
     }
     areas[t] = area;

@@ -324,6 +324,22 @@ void TestInvalidInputs()
   MOBIUS_CHECK(!r.Success);
   MOBIUS_CHECK(Contains(r.Message, "genus 1"));
 
+  // A sliver of three points on a line (m on the edge (a, b), closing the triangle split at
+  // m): mapped on the intrinsic Delaunay triangulation, refused by name without it.
+  const Index a = t(0, 0), b = t(0, 1), c = t(0, 2), m = p.rows();
+  Points withMidpoint(m + 1, 3);
+  withMidpoint << p, (p.row(a) + p.row(b)) / 2;
+  Triangles split(t.rows() + 2, 3);
+  split.topRows(t.rows() - 1) = t.bottomRows(t.rows() - 1);
+  split.bottomRows(3) << a, m, c, m, b, c, a, b, m;
+  ConformalMapParameters withoutIntrinsic;
+  withoutIntrinsic.IntrinsicDelaunay = false;
+  withoutIntrinsic.IntrinsicDelaunayWhenFolded = false;
+  r = ComputeSphericalConformalMap(withMidpoint, split, withoutIntrinsic);
+  MOBIUS_CHECK(!r.Success && Contains(r.Message, "zero-area triangles (1, three points on a line)"));
+  r = ComputeSphericalConformalMap(withMidpoint, split);
+  MOBIUS_CHECK(r.Success && AllOnUnitSphere(r.SpherePoints));
+
   // Parameters.
   ConformalMapParameters parameters;
   parameters.TimeStep = -1.0;

@@ -447,6 +447,48 @@ void TestRepairMesh()
   MOBIUS_CHECK(merged.Topology.InconsistentlyOrientedEdges == 0);
 }
 
+// Triangles without area are geometry, not topology: a sliver closing a T-junction is kept;
+// a triangle with two corners at one position loses its zero-length edge (the two points
+// merged, the two triangles on the edge dropped), which gives back the mesh it came from.
+void TestZeroAreaRepairs()
+{
+  Points p;
+  Triangles t;
+  MakeIcosphere(1, p, t);
+  const Index a = t(0, 0), b = t(0, 1), c = t(0, 2), m = p.rows();
+  Triangles split(t.rows() + 2, 3);
+  split.topRows(t.rows() - 1) = t.bottomRows(t.rows() - 1);
+  split.bottomRows(3) << a, m, c, m, b, c, a, b, m;
+  Points sliver(m + 1, 3);
+  sliver << p, (p.row(a) + p.row(b)) / 2;
+  const RepairedMesh kept = RepairMesh(sliver, split, { false, false });
+  MOBIUS_CHECK(kept.Problem.empty());
+  MOBIUS_CHECK(kept.Topology.ZeroAreaTriangles == 1);
+  MOBIUS_CHECK(kept.CollapsedEdges == 0);
+  MOBIUS_CHECK(kept.Points.rows() == m + 1 && kept.Triangles.rows() == split.rows());
+
+  Points coincident = sliver;
+  coincident.row(m) = p.row(a);
+  const RepairedMesh collapsed = RepairMesh(coincident, split, { false, false });
+  MOBIUS_CHECK(collapsed.Problem.empty());
+  MOBIUS_CHECK(collapsed.CollapsedEdges == 1);
+  MOBIUS_CHECK(collapsed.Topology.IsTopologicalSphere());
+  MOBIUS_CHECK(collapsed.Topology.ZeroAreaTriangles == 0);
+  MOBIUS_CHECK(collapsed.Points.rows() == m && collapsed.Triangles.rows() == t.rows());
+  for (Index i = 0; i < collapsed.Points.rows(); ++i)
+  {
+    MOBIUS_CHECK(collapsed.Provenance.PointSource[i] == i); // m, merged into a, is gone
+  }
+
+  // Nothing but zero-area triangles: no surface to map.
+  Points line(4, 3);
+  line << 0, 0, 0, 1, 2, 3, 2, 4, 6, 3, 6, 9;
+  Triangles tetrahedron(4, 3);
+  tetrahedron << 0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2;
+  const RepairedMesh flat = RepairMesh(line, tetrahedron, { false, false });
+  MOBIUS_CHECK(flat.Problem.find("every triangle has zero area") != std::string::npos);
+}
+
 int main()
 {
   TestSphereAndTorus();
@@ -458,5 +500,6 @@ int main()
   TestDuplicateTriangles();
   TestHubVertex();
   TestRepairMesh();
+  TestZeroAreaRepairs();
   return MOBIUS_TEST_RESULT();
 }

@@ -208,7 +208,7 @@ void TestBadInput()
   negative[2] = -1;
   ExpectFailure(sphere, triangles, negative, "invalid area");
   ExpectFailure(sphere, triangles, Vector::Ones(3), "one area per triangle");
-  ExpectFailure(sphere, triangles, Vector::Zero(triangles.rows()), "invalid area");
+  ExpectFailure(sphere, triangles, Vector::Zero(triangles.rows()), "no area");
   Vector infinite = areas;
   infinite[0] = std::numeric_limits<double>::infinity();
   ExpectFailure(sphere, triangles, infinite, "invalid area");

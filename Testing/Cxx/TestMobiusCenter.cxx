@@ -252,12 +252,21 @@ int TestBadInputs()
   noArea->GetCellData()->RemoveArray("SurfaceArea");
   failures += ExpectError(noArea, "SurfaceArea");
 
-  for (double bad : { 0.0, -1.0, std::numeric_limits<double>::infinity(), std::nan("") })
+  for (double bad : { -1.0, std::numeric_limits<double>::infinity(), std::nan("") })
   {
     auto badArea = mobius_test::MakeSphericalMap(2, mobius_test::BumpySurface);
     badArea->GetCellData()->GetArray("SurfaceArea")->SetTuple1(7, bad);
     failures += ExpectError(badArea, "invalid value");
   }
+  // A triangle of three points on a line has no area; it weighs nothing, and is no error.
+  auto zeroArea = mobius_test::MakeSphericalMap(2, mobius_test::BumpySurface);
+  zeroArea->GetCellData()->GetArray("SurfaceArea")->SetTuple1(7, 0.0);
+  vtkNew<vtkMobiusCenter> center;
+  mobius_test::MessageCatcher catcher(center);
+  center->SetInputData(zeroArea);
+  center->Update();
+  MOBIUS_EXPECT(catcher.Error.empty());
+  MOBIUS_EXPECT(center->GetOutput()->GetNumberOfPoints() == zeroArea->GetNumberOfPoints());
   return failures;
 }
 }

@@ -91,12 +91,17 @@ std::string CheckInput(const Points& points, const Triangles& triangles, const V
         return error.str();
       }
     }
-    if (!std::isfinite(areas[t]) || areas[t] <= 0)
+    // Zero is a triangle of three points on a line (it weighs nothing).
+    if (!std::isfinite(areas[t]) || areas[t] < 0)
     {
       error << "triangle " << t << " has an invalid area (" << areas[t]
-            << "); areas must be finite and positive";
+            << "); areas must be finite and not negative";
       return error.str();
     }
+  }
+  if (!(areas.sum() > 0))
+  {
+    return "the triangles have no area";
   }
   return {};
 }

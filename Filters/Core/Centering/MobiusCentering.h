@@ -65,8 +65,9 @@ Eigen::Vector3d SphericalCenterOfMass(
   const Points& points, const Triangles& triangles, const Vector& triangleAreas);
 
 /// Centers the spherical map in place. `points` must lie on the unit sphere;
-/// `triangleAreas` holds one finite, positive area per triangle (ignored when there are no
-/// triangles: then the points are centered as a point set with unit weights).
+/// `triangleAreas` holds one finite area per triangle, not negative and not all 0 (ignored
+/// when there are no triangles: then the points are centered as a point set with unit
+/// weights).
 /// Returns false (and sets result.Error) on invalid input or on abort; the points are then
 /// left as they were.
 bool CenterSphericalMap(Points& points, const Triangles& triangles, const Vector& triangleAreas,

@@ -179,18 +179,21 @@ ConformalMapResult MapToSphere(
     return Fail(result, "ConvergenceTolerance must not be negative");
   }
 
-  MeshTopologyReport topology = AnalyzeMeshTopology(points, triangles);
-  if (p.IntrinsicDelaunay)
-  {
-    // Collinear triangles are fine on the intrinsic Delaunay triangulation (their long edge
-    // gets flipped away); a zero-length edge is caught when the weights are built.
-    topology.ZeroAreaTriangles = 0;
-  }
+  const MeshTopologyReport topology = AnalyzeMeshTopology(points, triangles);
   if (!topology.IsTopologicalSphere())
   {
     return Fail(result,
       "the input is not a closed, connected, consistently oriented genus-0 surface: " +
         DescribeTopologyProblems(topology));
+  }
+  // Collinear triangles are fine on the intrinsic Delaunay triangulation (their long edge
+  // gets flipped away); a zero-length edge is caught when the weights are built.
+  if (!p.IntrinsicDelaunay && topology.ZeroAreaTriangles > 0)
+  {
+    return Fail(result,
+      "zero-area triangles (" + std::to_string(topology.ZeroAreaTriangles) +
+        ", three points on a line), whose cotangent weights are not defined without the "
+        "intrinsic Delaunay triangulation");
   }
 
   Points x = points;

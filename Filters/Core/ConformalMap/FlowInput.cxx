@@ -38,7 +38,9 @@ bool TriangleAreasAtScale(const Points& points, const Triangles& triangles, int 
                           c = points.row(triangles(t, 2));
     const double area = 0.5 * (b - a).cross(c - a).norm();
     areas[t] = std::ldexp(area, 2 * scaleExponent);
-    if (!std::isfinite(areas[t]) || !(areas[t] >= DBL_MIN))
+    // Exactly 0 is three points on a line, which the flow takes; a positive area must stay
+    // a normal double at the input's scale.
+    if (!std::isfinite(areas[t]) || (area != 0.0 && !(areas[t] >= DBL_MIN)))
     {
       std::ostringstream message;
       message << "its triangles' areas (triangle " << t << ": 2^"

@@ -25,7 +25,8 @@ int ScaleToUnitOrder(Points& points);
 bool FaceOutward(const Points& points, Triangles& triangles);
 
 /// The triangles' areas at the input's scale (`points` times 2^scaleExponent). False, with
-/// `problem` naming the first triangle, when one is not a positive normal double.
+/// `problem` naming the first triangle, when one is neither 0 (three points on a line) nor
+/// a positive normal double.
 bool TriangleAreasAtScale(const Points& points, const Triangles& triangles, int scaleExponent,
   Vector& areas, std::string& problem);
 }

@@ -263,7 +263,7 @@ bool MeshTopologyReport::IsTopologicalSphere() const
 {
   return this->NumberOfTriangles > 0 && this->NonFinitePoints == 0 &&
     this->InvalidTriangles == 0 && this->RepeatedVertexTriangles == 0 &&
-    this->ZeroAreaTriangles == 0 && this->DuplicateTriangles == 0 && this->UnusedPoints == 0 &&
+    this->DuplicateTriangles == 0 && this->UnusedPoints == 0 &&
     this->IsClosedManifold() &&
     this->InconsistentlyOrientedEdges == 0 && this->ConnectedComponents == 1 &&
     this->Genus == 0;
@@ -455,7 +455,6 @@ std::string DescribeTopologyProblems(const MeshTopologyReport& r)
     "triangles with point indices out of range");
   add(r.RepeatedVertexTriangles, "triangle naming the same point twice",
     "triangles naming the same point twice");
-  add(r.ZeroAreaTriangles, "zero-area triangle", "zero-area triangles");
   add(r.DuplicateTriangles, "duplicate triangle (the same three points as another triangle)",
     "duplicate triangles (the same three points as other triangles)");
   add(r.UnusedPoints, "point not used by any triangle", "points not used by any triangle");
@@ -550,6 +549,48 @@ MeshProvenance MergeDuplicatePoints(Points& points, Triangles& triangles)
   }
   triangles = SelectRows(triangles, provenance.TriangleSource);
   points.swap(merged);
+  return provenance;
+}
+
+MeshProvenance CollapseZeroLengthEdges(Points& points, Triangles& triangles, Index* collapsed)
+{
+  const std::vector<char> valid = ValidTriangles(triangles, points.rows());
+  UnionFind ends(points.rows());
+  Index count = 0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; valid[t] && k < 3; ++k)
+    {
+      const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
+      if (points.row(a) == points.row(b) && ends.Find(a) != ends.Find(b))
+      {
+        ends.Union(std::max(a, b), std::min(a, b)); // the lower number stays
+        ++count;
+      }
+    }
+  }
+  MeshProvenance provenance;
+  for (Index i = 0; i < points.rows(); ++i)
+  {
+    provenance.PointSource.push_back(i); // the merged-away points are left unused
+  }
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; valid[t] && k < 3; ++k)
+    {
+      triangles(t, k) = ends.Find(triangles(t, k));
+    }
+    const Index a = triangles(t, 0), b = triangles(t, 1), c = triangles(t, 2);
+    if (!valid[t] || (a != b && b != c && c != a))
+    {
+      provenance.TriangleSource.push_back(t); // invalid triangles are left for Analyze
+    }
+  }
+  triangles = SelectRows(triangles, provenance.TriangleSource);
+  if (collapsed)
+  {
+    *collapsed = count;
+  }
   return provenance;
 }
 

@@ -40,7 +40,8 @@ struct MeshTopologyReport
   /// Every edge has two triangles and every vertex a single fan.
   bool IsClosedManifold() const;
   /// What the spherical conformal map needs: a closed, oriented, connected genus-0 surface
-  /// with finite coordinates and no degenerate triangles.
+  /// with finite coordinates and no triangle naming a point twice. Zero-area triangles are
+  /// geometry, not topology: the intrinsic Delaunay weights take them.
   bool IsTopologicalSphere() const;
 };
 
@@ -65,6 +66,13 @@ struct MeshProvenance
 /// their first occurrence, renumbers the triangles and drops those that then name a point
 /// twice. Unused points are kept, so that merging alone changes nothing else.
 MeshProvenance MergeDuplicatePoints(Points& points, Triangles& triangles);
+
+/// Collapses every edge whose two ends are at exactly the same position (a triangle with two
+/// corners in one place): the ends are merged into the lower-numbered one, and the triangles
+/// that then name a point twice (those on the edge) are dropped. The surface is the same, and
+/// its cotangent weights are defined again. The merged-away points are kept, unused.
+/// `collapsed` receives the number of edges collapsed.
+MeshProvenance CollapseZeroLengthEdges(Points& points, Triangles& triangles, Index* collapsed);
 
 /// Keeps the edge-connected component with the most triangles and the points it uses.
 /// Invalid triangles (bad index, repeated point) are dropped as well.

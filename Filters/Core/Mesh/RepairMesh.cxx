@@ -113,6 +113,16 @@ RepairedMesh RepairMesh(Points points, Triangles triangles, const MeshRepairOpti
   {
     Apply(mesh.Provenance, MergeDuplicatePoints(points, triangles));
   }
+  if (report.ZeroAreaTriangles > 0 && report.ZeroAreaTriangles == report.NumberOfTriangles)
+  {
+    mesh.Problem = "every triangle has zero area (the points lie on a line or in one place)";
+    return mesh;
+  }
+  // Only a zero-area triangle can have a zero-length edge.
+  if (report.ZeroAreaTriangles > 0)
+  {
+    Apply(mesh.Provenance, CollapseZeroLengthEdges(points, triangles, &mesh.CollapsedEdges));
+  }
   const bool keepLargest = options.KeepLargestComponent && report.ConnectedComponents > 1;
   if (keepLargest)
   {
@@ -121,7 +131,7 @@ RepairedMesh RepairMesh(Points points, Triangles triangles, const MeshRepairOpti
   // The report is recomputed only after a repair changed the mesh: on a clean mesh (the
   // usual case) it is still the first one, and the analysis is a large share of the map's
   // time outside the flow.
-  bool changed = mesh.MergedDuplicatePoints > 0 || keepLargest;
+  bool changed = mesh.MergedDuplicatePoints > 0 || mesh.CollapsedEdges > 0 || keepLargest;
   const Index pointsBefore = points.rows();
   Apply(mesh.Provenance, RemoveUnusedPoints(points, triangles));
   changed = changed || points.rows() != pointsBefore;

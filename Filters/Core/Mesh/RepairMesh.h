@@ -1,8 +1,9 @@
 // The repairs that turn a triangle mesh into what the spherical conformal map needs (a
 // closed, oriented, connected genus-0 surface), or the reason it cannot be: merge a
-// triangle soup's duplicated points, keep the largest component, drop unused points, fill
-// holes, orient the triangles consistently. Every repair is reported, and where each
-// output point and triangle came from is kept so that callers can carry their attributes.
+// triangle soup's duplicated points, collapse zero-length edges, keep the largest
+// component, drop unused points, fill holes, orient the triangles consistently. Every
+// repair is reported, and where each output point and triangle came from is kept so that
+// callers can carry their attributes.
 #ifndef mobius_RepairMesh_h
 #define mobius_RepairMesh_h
 
@@ -29,6 +30,8 @@ struct RepairedMesh
   /// a repair (a hole's fill).
   MeshProvenance Provenance;
   Index MergedDuplicatePoints = 0;
+  /// Edges whose two ends were at one position, collapsed (see CollapseZeroLengthEdges).
+  Index CollapsedEdges = 0;
   Index FilledHoles = 0;
   /// The topology of the repaired mesh.
   MeshTopologyReport Topology;
