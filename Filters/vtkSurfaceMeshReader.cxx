@@ -98,7 +98,8 @@ std::string CheckXMLPointsComponents(vtkXMLReader* reader)
       {
         std::ostringstream message;
         message << "the points' data array in piece " << p << " has " << components
-                << " components per point (NumberOfComponents), not 3";
+                << (components == 1 ? " component" : " components")
+                << " per point (NumberOfComponents), not 3";
         return message.str();
       }
     }

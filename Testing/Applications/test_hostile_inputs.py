@@ -280,11 +280,11 @@ counts = {
     "vtp a billion components": ("c19.vtp", vtp_tetra.replace('NumberOfComponents="3"', 'NumberOfComponents="1000000000"'),
                                  ["components"]),
     "vtp points with 1 component": ("c40.vtp", vtp_tetra.replace('NumberOfComponents="3"', 'NumberOfComponents="1"'),
-                                    ["1 components per point", "not 3"]),
+                                    ["1 component per point", "not 3"]),
     # Found by the fuzzer: a search of the text for NumberOfComponents="3" matched here.
     "vtp points' components inside a longer attribute": (
         "c41.vtp", vtp_tetra.replace('NumberOfComponents="3"', 'ComponentName0NumberOfComponents="3"'),
-        ["1 components per point", "not 3"]),
+        ["1 component per point", "not 3"]),
     "stl no triangles": ("c20.stl", (b"x" * 80 + struct.pack("<I", 0)).decode(), ["no triangles"]),
     "obj no faces": ("c21.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n", ["no triangles"]),
     "off no faces": ("c22.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", ["no triangles"]),
