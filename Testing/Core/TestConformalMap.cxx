@@ -326,12 +326,9 @@ void TestInvalidInputs()
 
   // A sliver of three points on a line (m on the edge (a, b), closing the triangle split at
   // m): mapped on the intrinsic Delaunay triangulation, refused by name without it.
-  const Index a = t(0, 0), b = t(0, 1), c = t(0, 2), m = p.rows();
-  Points withMidpoint(m + 1, 3);
-  withMidpoint << p, (p.row(a) + p.row(b)) / 2;
-  Triangles split(t.rows() + 2, 3);
-  split.topRows(t.rows() - 1) = t.bottomRows(t.rows() - 1);
-  split.bottomRows(3) << a, m, c, m, b, c, a, b, m;
+  Points withMidpoint;
+  Triangles split;
+  InsertSliver(p, t, (p.row(t(0, 0)) + p.row(t(0, 1))) / 2, withMidpoint, split);
   ConformalMapParameters withoutIntrinsic;
   withoutIntrinsic.IntrinsicDelaunay = false;
   withoutIntrinsic.IntrinsicDelaunayWhenFolded = false;

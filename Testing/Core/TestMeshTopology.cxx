@@ -455,12 +455,10 @@ void TestZeroAreaRepairs()
   Points p;
   Triangles t;
   MakeIcosphere(1, p, t);
-  const Index a = t(0, 0), b = t(0, 1), c = t(0, 2), m = p.rows();
-  Triangles split(t.rows() + 2, 3);
-  split.topRows(t.rows() - 1) = t.bottomRows(t.rows() - 1);
-  split.bottomRows(3) << a, m, c, m, b, c, a, b, m;
-  Points sliver(m + 1, 3);
-  sliver << p, (p.row(a) + p.row(b)) / 2;
+  const Index a = t(0, 0), m = p.rows();
+  Points sliver;
+  Triangles split;
+  InsertSliver(p, t, (p.row(a) + p.row(t(0, 1))) / 2, sliver, split);
   const RepairedMesh kept = RepairMesh(sliver, split, { false, false });
   MOBIUS_CHECK(kept.Problem.empty());
   MOBIUS_CHECK(kept.Topology.ZeroAreaTriangles == 1);

@@ -68,4 +68,15 @@ void MakeIcosphere(int levels, Points& points, Triangles& triangles)
     }
   }
 }
+
+void InsertSliver(const Points& points, const Triangles& triangles, const Eigen::RowVector3d& where,
+  Points& withSliver, Triangles& split)
+{
+  const Index a = triangles(0, 0), b = triangles(0, 1), c = triangles(0, 2), m = points.rows();
+  withSliver.resize(m + 1, 3);
+  withSliver << points, where;
+  split.resize(triangles.rows() + 2, 3);
+  split.topRows(triangles.rows() - 1) = triangles.bottomRows(triangles.rows() - 1);
+  split.bottomRows(3) << a, m, c, m, b, c, a, b, m;
+}
 }

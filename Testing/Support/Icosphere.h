@@ -12,6 +12,13 @@ namespace mobius
 /// 20*4^levels triangles, outward (counter-clockwise seen from outside) orientation.
 /// The vertex set is mirror-symmetric about each coordinate plane.
 void MakeIcosphere(int levels, Points& points, Triangles& triangles);
+
+/// A sliver without area closing a T-junction: a new last point m at `where` on the edge
+/// (a, b) of triangle 0 (a, b, c), that triangle split into (a, m, c) and (m, b, c), and
+/// (a, b, m) closing the other side of the edge. Triangle 0 goes last: the split and the
+/// sliver are the last three rows.
+void InsertSliver(const Points& points, const Triangles& triangles, const Eigen::RowVector3d& where,
+  Points& withSliver, Triangles& split);
 }
 
 #endif
