@@ -235,7 +235,10 @@ public:
    * the mapped points, by a few non-rigid ICP iterations, and each vertex is projected onto
    * the target. The spectral map is right to about an edge length but slides in thin parts;
    * on near-isometric pairs the polish takes that slide out (see SurfacePolish.h and the
-   * README's Accuracy section).
+   * README's Accuracy section). The map the other way (target onto source) is polished
+   * too, on a second thread, and each point ends halfway between its polished image and
+   * the inverse of the other direction's (InverseAveraging.h): the polish favours the
+   * surface it deforms, and the average is nearer the truth than either direction.
    */
   vtkSetMacro(GeometricPolish, bool);
   vtkGetMacro(GeometricPolish, bool);
