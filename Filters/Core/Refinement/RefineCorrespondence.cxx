@@ -251,19 +251,20 @@ std::vector<std::pair<Index, Index>> Swapped(const std::vector<std::pair<Index, 
   return swapped;
 }
 
-// The kept map extended to every vertex. With the polish, both directions are extended and
-// polished, one per thread, and the map is averaged with the inverse of the other
-// (InverseAveraging); without it, the forward extension alone.
+// The kept map extended to every vertex and polished as the options ask. In both
+// directions, each is extended and polished on its own thread, and the map is averaged with
+// the inverse of the other (InverseAveraging).
 void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<std::pair<Index, Index>>& landmarks, const ZoomOutParameters& parameters,
   const CorrespondenceRefinementOptions& options, RefinedCorrespondence& refined)
 {
   const int threads = ResolveThreadCount(options.ZoomOut.NumberOfThreads);
-  if (!options.GeometricPolish)
+  if (!options.GeometricPolish || !options.BothDirections)
   {
-    DirectionMap forward =
-      ExtendAndPolish(source, target, refined.Kept, parameters, landmarks, false, threads);
+    DirectionMap forward = ExtendAndPolish(
+      source, target, refined.Kept, parameters, landmarks, options.GeometricPolish, threads);
     refined.Dense = std::move(forward.Dense);
+    refined.PolishError = forward.PolishError;
     refined.ExtensionSeconds = forward.ExtensionSeconds;
     return;
   }
