@@ -381,6 +381,11 @@ const std::vector<Option>& Options()
         "keep the spectral map: no geometric polish (ARAP\n"
         "non-rigid ICP of the source onto the target) after it",
         &PipelineOptions::GeometricPolish, false),
+      PipelineFlag("--both-directions",
+        "polish the map the other way too (a second thread)\n"
+        "and average each point with its inverse: a few\n"
+        "percent more accurate, a second polish's time",
+        &PipelineOptions::BothDirections, true),
       PipelineChoice("--output-geometry", "--output-geometry G",
         "target | source: where OUT.vtp's points are (default target)", { "target", "source" },
         [](PipelineOptions& pipeline, int geometry) { pipeline.OutputGeometry = geometry; }),

@@ -394,6 +394,7 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   refinement->SetStartBasisSize(
     mobius::ClampToBasisSize(refinement->GetStartBasisSize(), options.BasisSize));
   refinement->SetGeometricPolish(options.GeometricPolish);
+  refinement->SetBothDirections(options.BothDirections);
   refinement->SetCandidate(options.Candidate);
   refinement->SetNumberOfThreads(threads);
   AddLandmarkPoints(result, refinement);

@@ -214,6 +214,7 @@ mobius::CorrespondenceRefinementOptions RefinementOptions(
     : mobius::CandidateCriterion::Curvature;
   options.Candidate = filter->GetCandidate();
   options.GeometricPolish = filter->GetGeometricPolish();
+  options.BothDirections = filter->GetBothDirections();
   options.Progress = mobius::vtk::ProgressAndAbort(filter);
   return options;
 }
@@ -395,6 +396,7 @@ vtkCorrespondenceRefinement::vtkCorrespondenceRefinement()
   this->StartBasisSize = defaults.StartBasisSize;
   this->ScreeningBasisSize = defaults.ScreeningBasisSize;
   this->GeometricPolish = defaults.GeometricPolish;
+  this->BothDirections = defaults.BothDirections;
   this->Candidate = defaults.Candidate;
   this->OutputGeometry = defaults.OutputGeometry;
   this->NumberOfThreads = defaults.NumberOfThreads;
@@ -503,6 +505,7 @@ void vtkCorrespondenceRefinement::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RepairOrientation: " << this->RepairOrientation << "\n";
   os << indent << "ConsistentMassShare: " << this->ConsistentMassShare << "\n";
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
+  os << indent << "BothDirections: " << this->BothDirections << "\n";
   os << indent << "SphereAnchorWeight: " << this->SphereAnchorWeight << "\n";
   os << indent << "CandidateCriterion: " << this->CandidateCriterion << "\n";
   os << indent << "Candidate: " << this->Candidate << "\n";

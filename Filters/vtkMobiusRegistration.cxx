@@ -58,6 +58,7 @@ mobius::RegistrationParameters ParametersOf(vtkMobiusRegistration* filter)
   options.Refine = filter->GetRefine();
   options.BasisSize = filter->GetBasisSize();
   options.GeometricPolish = filter->GetGeometricPolish();
+  options.BothDirections = filter->GetBothDirections();
   options.Candidate = filter->GetCandidate();
   options.OutputGeometry = filter->GetOutputGeometry();
   options.NumberOfThreads = filter->GetNumberOfThreads();
@@ -136,6 +137,7 @@ vtkMobiusRegistration::vtkMobiusRegistration()
   this->Refine = defaults.Refine;
   this->BasisSize = defaults.BasisSize;
   this->GeometricPolish = defaults.GeometricPolish;
+  this->BothDirections = defaults.BothDirections;
   this->Candidate = defaults.Candidate;
   this->OutputGeometry = defaults.OutputGeometry;
   this->NumberOfThreads = defaults.NumberOfThreads;
@@ -294,6 +296,7 @@ void vtkMobiusRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Refine: " << this->Refine << "\n";
   os << indent << "BasisSize: " << this->BasisSize << "\n";
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";
+  os << indent << "BothDirections: " << this->BothDirections << "\n";
   os << indent << "Candidate: " << this->Candidate << "\n";
   os << indent << "OutputGeometry: " << this->OutputGeometry << "\n";
   os << indent << "LandmarkMode: " << this->LandmarkMode << "\n";

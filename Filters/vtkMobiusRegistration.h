@@ -145,7 +145,8 @@ public:
   ///@{
   /**
    * Refinement (vtkCorrespondenceRefinement): on or off (the paper's Möbius map), basis
-   * size, geometric polish, and the candidate to keep (-1: it chooses).
+   * size, geometric polish (in both directions, averaged: BothDirections), and the
+   * candidate to keep (-1: it chooses).
    */
   vtkSetMacro(Refine, bool);
   vtkGetMacro(Refine, bool);
@@ -155,6 +156,9 @@ public:
   vtkSetMacro(GeometricPolish, bool);
   vtkGetMacro(GeometricPolish, bool);
   vtkBooleanMacro(GeometricPolish, bool);
+  vtkSetMacro(BothDirections, bool);
+  vtkGetMacro(BothDirections, bool);
+  vtkBooleanMacro(BothDirections, bool);
   vtkSetMacro(Candidate, int);
   vtkGetMacro(Candidate, int);
   ///@}
@@ -229,6 +233,7 @@ protected:
   bool Refine;
   int BasisSize;
   bool GeometricPolish;
+  bool BothDirections;
   int Candidate;
   int OutputGeometry;
   int LandmarkMode;

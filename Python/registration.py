@@ -41,6 +41,8 @@ def _default_options():
         "refine": True,  # spectral refinement (False: the Möbius map alone)
         "basis_size": refinement.GetBasisSize(),  # eigenfunctions of the refinement
         "polish": bool(refinement.GetGeometricPolish()),  # the refinement's geometric polish
+        # the polish in both directions, averaged (mobius-register --both-directions)
+        "both_directions": bool(refinement.GetBothDirections()),
         "resolution": registration.GetResolution(),  # scale-factor grid of the SO(3) correlation (even)
         "smoothing": registration.GetSmoothingTime(),  # heat-kernel smoothing time of the scale factors
         "transform": transforms[registration.GetTransformMode()],  # rotation | reflection | both
@@ -275,6 +277,7 @@ def _registration_filter(options, errors):
     registration.SetRefine(bool(options["refine"]))
     registration.SetBasisSize(int(options["basis_size"]))
     registration.SetGeometricPolish(bool(options["polish"]))
+    registration.SetBothDirections(bool(options["both_directions"]))
     registration.SetCandidate(-1 if options["candidate"] is None else int(options["candidate"]))
     registration.SetNumberOfThreads(int(options["threads"]))
     registration.SetLandmarkMode(int(options["landmark_mode"]))
@@ -305,7 +308,9 @@ def register(source, target, **options):
     closed genus-0 triangle surfaces (see fill_holes, keep_largest_component).
 
     Options (defaults as mobius-register's): refine=True, basis_size=80 (2 to 500), polish=True (end the
-    refinement with its geometric polish; False as --no-polish), resolution=256,
+    refinement with its geometric polish; False as --no-polish), both_directions=False (polish
+    the map the other way too and average each point with its inverse, as --both-directions),
+    resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
     candidate=None (keep this candidate's refined map, 0..candidates-1, as --candidate, for a
     map that came out turned while a warning named a near-equal runner-up), iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,

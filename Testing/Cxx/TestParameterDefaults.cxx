@@ -86,6 +86,7 @@ int TestParameterDefaults(int, char*[])
   ExpectEqual("refinement ScreeningBasisSize", refinement->GetScreeningBasisSize(),
     core.ScreeningBasisSize);
   ExpectEqual("refinement GeometricPolish", refinement->GetGeometricPolish(), core.GeometricPolish);
+  ExpectEqual("refinement BothDirections", refinement->GetBothDirections(), core.BothDirections);
   ExpectEqual("refinement Candidate", refinement->GetCandidate(), core.Candidate);
   ExpectEqual("refinement OutputGeometry", refinement->GetOutputGeometry(), core.OutputGeometry);
   ExpectEqual("refinement NumberOfThreads", refinement->GetNumberOfThreads(), core.NumberOfThreads);

@@ -72,6 +72,7 @@ conformal, registration = filters.vtkSphericalConformalMap(), filters.vtkSO3Regi
 refinement = filters.vtkCorrespondenceRefinement()
 python_expected = {
     "basis_size": refinement.GetBasisSize(), "polish": refinement.GetGeometricPolish(),
+    "both_directions": refinement.GetBothDirections(),
     "resolution": registration.GetResolution(), "smoothing": registration.GetSmoothingTime(),
     "candidates": registration.GetNumberOfCandidates(),
     "iterations": conformal.GetMaximumNumberOfIterations(),

@@ -1,5 +1,6 @@
 #include "RefineCorrespondence.h"
 
+#include "InverseAveraging.h"
 #include "LandmarkAlignment.h"
 #include "ParallelFor.h"
 #include "SurfacePolish.h"
@@ -201,6 +202,96 @@ std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface&
     target.Faces, target.Corners, dense.Triangle, dense.Barycentric, polish, info);
   return polished ? std::string() : info.Error;
 }
+
+// One direction's dense map: the sample map extended to every vertex and, on request,
+// polished; the extension's seconds.
+struct DirectionMap
+{
+  DenseMap Dense;
+  std::string PolishError;
+  double ExtensionSeconds = 0;
+};
+
+DirectionMap ExtendAndPolish(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& samples, ZoomOutParameters parameters,
+  const std::vector<std::pair<Index, Index>>& pinned, bool polish, int numberOfThreads)
+{
+  Stopwatch stopwatch;
+  parameters.NumberOfThreads = numberOfThreads;
+  DirectionMap map;
+  map.Dense = ExtendToAllVertices(source, target, samples, parameters, pinned);
+  map.ExtensionSeconds = stopwatch.Lap();
+  if (polish)
+  {
+    map.PolishError = PolishDenseMap(source, target, samples, numberOfThreads, pinned, map.Dense);
+  }
+  return map;
+}
+
+// The kept sample map the other way, target samples onto source vertices, read off its
+// functional map transposed (the inverse of a near-orthogonal map); of the same orientation.
+SampleMap ReverseSampleMap(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& kept, int numberOfThreads)
+{
+  SampleMap reverse;
+  reverse.FunctionalMap = kept.FunctionalMap.transpose();
+  reverse.TargetVertex =
+    SampleMapFromFunctionalMap(target, source, reverse.FunctionalMap, numberOfThreads);
+  reverse.OrientationAgreement = kept.OrientationAgreement;
+  return reverse;
+}
+
+std::vector<std::pair<Index, Index>> Swapped(const std::vector<std::pair<Index, Index>>& pairs)
+{
+  std::vector<std::pair<Index, Index>> swapped;
+  for (const auto& pair : pairs)
+  {
+    swapped.emplace_back(pair.second, pair.first);
+  }
+  return swapped;
+}
+
+// The kept map extended to every vertex and polished as the options ask. In both
+// directions, each is extended and polished on its own thread, and the map is averaged with
+// the inverse of the other (InverseAveraging).
+void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
+  const std::vector<std::pair<Index, Index>>& landmarks, const ZoomOutParameters& parameters,
+  const CorrespondenceRefinementOptions& options, RefinedCorrespondence& refined)
+{
+  const int threads = ResolveThreadCount(options.ZoomOut.NumberOfThreads);
+  if (!options.GeometricPolish || !options.BothDirections)
+  {
+    DirectionMap forward = ExtendAndPolish(
+      source, target, refined.Kept, parameters, landmarks, options.GeometricPolish, threads);
+    refined.Dense = std::move(forward.Dense);
+    refined.PolishError = forward.PolishError;
+    refined.ExtensionSeconds = forward.ExtensionSeconds;
+    return;
+  }
+  const SampleMap reverseSamples = ReverseSampleMap(source, target, refined.Kept, threads);
+  const int each = std::max(1, threads / 2);
+  DirectionMap forward, reverse;
+  ParallelFor(2, threads, [&](int direction, int) {
+    if (direction == 0)
+    {
+      forward = ExtendAndPolish(source, target, refined.Kept, parameters, landmarks, true, each);
+    }
+    else
+    {
+      reverse = ExtendAndPolish(
+        target, source, reverseSamples, parameters, Swapped(landmarks), true, each);
+    }
+  });
+  refined.Dense = std::move(forward.Dense);
+  refined.PolishError = forward.PolishError;
+  refined.ExtensionSeconds = forward.ExtensionSeconds;
+  if (forward.PolishError.empty() && reverse.PolishError.empty())
+  {
+    AverageWithInverse(source.Positions, source.Faces, target.Positions, target.Faces,
+      target.Corners, reverse.Dense.Triangle, reverse.Dense.Barycentric, kInverseWeight,
+      landmarks, threads, refined.Dense.Triangle, refined.Dense.Barycentric);
+  }
+}
 }
 
 RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
@@ -243,14 +334,10 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
   {
     options.Progress(0.85); // the extension is not stopped
   }
-  refined.Dense =
-    ExtendToAllVertices(source, target, refined.Kept, parameters, spheres.Landmarks);
-  refined.ExtensionSeconds = stopwatch.Lap();
+  FinishDenseMap(source, target, spheres.Landmarks, parameters, options, refined);
   if (options.GeometricPolish)
   {
-    refined.PolishError = PolishDenseMap(source, target, refined.Kept,
-      options.ZoomOut.NumberOfThreads, spheres.Landmarks, refined.Dense);
-    refined.PolishSeconds = stopwatch.Lap();
+    refined.PolishSeconds = stopwatch.Lap() - refined.ExtensionSeconds;
   }
   return refined;
 }

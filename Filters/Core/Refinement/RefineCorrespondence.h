@@ -3,7 +3,9 @@
 // of the registration screened by ZoomOut on the samples, each held on its side of the
 // sphere; the one to keep chosen (CandidateChoice); its orientation repaired when no
 // candidate reached the expected one; its basis grown to the full size; the map extended to
-// every vertex and, on request, polished on the surfaces (SurfacePolish).
+// every vertex and, on request, polished on the surfaces (SurfacePolish), on further request
+// in both directions, each point then averaged with the inverse of the other direction's map
+// (InverseAveraging).
 #ifndef mobius_RefineCorrespondence_h
 #define mobius_RefineCorrespondence_h
 
@@ -57,6 +59,9 @@ struct CorrespondenceRefinementOptions
   /// The candidate to keep; -1: chosen by Criterion.
   int Candidate;
   bool GeometricPolish;
+  /// With GeometricPolish: the map the other way polished too, on a second thread, and
+  /// each point averaged with its inverse (InverseAveraging).
+  bool BothDirections;
   /// Called with the share of the refinement done (0.7 after the screening, 0.85 before the
   /// extension); false after the screening stops the refinement.
   std::function<bool(double)> Progress;
@@ -73,10 +78,14 @@ struct RefinedCorrespondence
   /// The kept candidate's screened map had the wrong orientation (repaired with
   /// RepairOrientation).
   bool WrongOrientation = false;
-  /// Per source vertex, its point on the target (polished with GeometricPolish).
+  /// Per source vertex, its point on the target (polished with GeometricPolish, averaged
+  /// with the inverse of the other direction's map with BothDirections).
   DenseMap Dense;
   /// Why the polish failed (the spectral map is kept); empty if it did not.
   std::string PolishError;
+  /// Wall time of the stages; with BothDirections the polish's includes the other
+  /// direction's extension and polish beyond the forward extension's (they run at the same
+  /// time) and the averaging.
   double CandidateSeconds = 0, ExtensionSeconds = 0, PolishSeconds = 0;
   /// Progress asked to stop: nothing after the screening is filled.
   bool Stopped = false;

@@ -120,6 +120,9 @@ struct RegistrationParameters
   /// Every candidate is refined up to this many functions; the best goes on to BasisSize.
   int ScreeningBasisSize = 30;
   bool GeometricPolish = true; ///< the refinement's geometric polish
+  /// The polish in both directions, each point averaged with the inverse of the other
+  /// direction's map (InverseAveraging): off, it costs a second extension and polish.
+  bool BothDirections = false;
   int Candidate = -1;          ///< the refinement's candidate to keep (-1: it chooses)
   /// Points whose images the user knows: every stage keeps them (none by default).
   std::vector<Landmark> Landmarks;
