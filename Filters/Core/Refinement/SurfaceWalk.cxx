@@ -3,7 +3,9 @@
 namespace mobius
 {
 // The Voronoi regions of the corners and edges are tested first (the interior solution
-// of the 2 x 2 normal equations is valid only when no region test applies).
+// of the 2 x 2 normal equations is valid only when no region test applies). An edge of zero
+// length (two corners at one position; its squared length is the denominator) has no
+// region of its own: the triangle is then a segment, found by the other edges' tests.
 double ClosestOnTriangle(const Eigen::Vector3d& q, const Eigen::Vector3d& a,
   const Eigen::Vector3d& b, const Eigen::Vector3d& c, Eigen::Vector3d& weights)
 {
@@ -22,7 +24,7 @@ double ClosestOnTriangle(const Eigen::Vector3d& q, const Eigen::Vector3d& a,
     return bp.squaredNorm();
   }
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  if (vc <= 0 && d1 >= 0 && d3 <= 0 && d1 - d3 > 0)
   {
     const double s = d1 / (d1 - d3);
     weights << 1 - s, s, 0;
@@ -36,14 +38,14 @@ double ClosestOnTriangle(const Eigen::Vector3d& q, const Eigen::Vector3d& a,
     return cp.squaredNorm();
   }
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  if (vb <= 0 && d2 >= 0 && d6 <= 0 && d2 - d6 > 0)
   {
     const double s = d2 / (d2 - d6);
     weights << 1 - s, 0, s;
     return (a + s * ac - q).squaredNorm();
   }
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0 && (d4 - d3) + (d5 - d6) > 0)
   {
     const double s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
     weights << 0, 1 - s, s;
