@@ -187,6 +187,15 @@ std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element
     {
       line.pop_back();
     }
+    // VTK's reader splits a header line at spaces and tabs only: another blank (a form
+    // feed, a vertical tab, a carriage return) stays inside its word, which the stream
+    // below would split off; "int\f" is then no type, and reading the data asserts.
+    if (line.find_first_of("\f\v\r") != std::string::npos)
+    {
+      return "malformed PLY header line " + std::to_string(number) +
+        ": a control character (form feed, vertical tab or carriage return) where words "
+        "are separated by spaces or tabs";
+    }
     std::istringstream fields(line);
     std::string keyword;
     fields >> keyword;
