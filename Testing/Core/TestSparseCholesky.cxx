@@ -1,6 +1,7 @@
 // SparseCholesky on shifted grid Laplacians small and large enough for each backend: the
 // solutions must satisfy the systems, and a refactorization with new values (same pattern)
-// must solve the new system, not the old one.
+// must solve the new system, not the old one; so for a factorization made for many solves,
+// whose backend differs below the supernodal size.
 #include "SparseCholesky.h"
 #include "CoreTest.h"
 
@@ -41,10 +42,10 @@ SparseCholesky::Matrix ShiftedGridLaplacian(int side, double shift)
   return matrix;
 }
 
-void TestSolves(int side)
+void TestSolves(int side, SparseCholesky::Use use = SparseCholesky::Use::FewSolves)
 {
   SparseCholesky::Matrix matrix = ShiftedGridLaplacian(side, 0.01);
-  SparseCholesky solver;
+  SparseCholesky solver(use);
   MOBIUS_CHECK(solver.Analyze(matrix));
   MOBIUS_CHECK(solver.Factorize(matrix));
   const Eigen::MatrixXd b = Eigen::MatrixXd::Random(matrix.rows(), 3);
@@ -65,9 +66,14 @@ int main()
 {
   TestSolves(20); // 400 rows: simplicial
   TestSolves(250); // 62,500 rows: supernodal when built with CHOLMOD
+  TestSolves(20, SparseCholesky::Use::ManySolves); // CHOLMOD's simplicial when built with it
+  TestSolves(250, SparseCholesky::Use::ManySolves);
   MOBIUS_CHECK(std::strlen(SparseCholesky::Backend(400)) > 0);
 #ifdef MOBIUS_HAVE_CHOLMOD
   MOBIUS_CHECK(std::strstr(SparseCholesky::Backend(62500), "CHOLMOD") != nullptr);
+  MOBIUS_CHECK(std::strstr(SparseCholesky::Backend(400), "Eigen") != nullptr);
+  MOBIUS_CHECK(std::strstr(
+                 SparseCholesky::Backend(400, SparseCholesky::Use::ManySolves), "CHOLMOD") != nullptr);
 #endif
   return MOBIUS_TEST_RESULT();
 }

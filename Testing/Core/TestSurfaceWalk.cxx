@@ -74,7 +74,8 @@ void TestWalk()
   const SurfaceWalker walker{ points, triangles, corners };
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
-  int wrong = 0;
+  int wrong = 0, quickWrong = 0;
+  double quickWorst = 0;
   for (int trial = 0; trial < 100; ++trial)
   {
     const Eigen::Vector3d q =
@@ -91,9 +92,20 @@ void TestWalk()
     const double walked = walker.Walk(q, t, weights);
     wrong += std::abs(walked - best) > 1e-12 ||
       std::abs((walker.Point(t, weights) - q).squaredNorm() - walked) > 1e-12;
+    // The local walk from the same far triangle: over corners and across edges to a
+    // triangle q projects inside, which on this convex mesh is the closest one or next to
+    // it (a second-order difference).
+    Index quick = corners.Items[corners.Begin(trial % points.rows())];
+    const double quickWalked = walker.Walk(q, quick, weights, true);
+    quickWrong += std::abs((walker.Point(quick, weights) - q).squaredNorm() - quickWalked) > 1e-12;
+    quickWorst = std::max(quickWorst, std::sqrt(quickWalked) - std::sqrt(best));
   }
   std::cout << "walks: " << wrong << " of 100 did not end at the closest point\n";
   MOBIUS_CHECK(wrong == 0);
+  // Edges of the level-3 icosphere are about 0.15 long.
+  std::cout << "local walks: " << quickWrong << " of 100 inconsistent, farthest "
+            << quickWorst << " beyond the closest distance\n";
+  MOBIUS_CHECK(quickWrong == 0 && quickWorst < 1e-3);
 }
 }
 

@@ -128,7 +128,8 @@ struct SparseCholesky::Implementation
 {
   Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int>> Simplicial;
 #ifdef MOBIUS_HAVE_CHOLMOD
-  Implementation()
+  explicit Implementation(Use use)
+    : ManySolves(use == Use::ManySolves)
   {
     cholmod_common& common = this->Supernodal.cholmod();
     // One ordering, METIS nested dissection, instead of CHOLMOD's default of trying AMD
@@ -150,27 +151,42 @@ struct SparseCholesky::Implementation
     common.zrelax[0] = 0.8;
     common.zrelax[1] = 0.3;
     common.zrelax[2] = 0.1;
+    cholmod_common& simplicial = this->SimplicialForSolves.cholmod();
+    simplicial.nmethods = 1;
+    simplicial.method[0].ordering = CHOLMOD_AMD; // less fill than METIS at these sizes
+    simplicial.postorder = 1;
+    simplicial.print = 0;
   }
   Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> Supernodal;
+  Eigen::CholmodSimplicialLDLT<Matrix, Eigen::Lower> SimplicialForSolves;
+  const bool ManySolves;
+  bool UseSimplicialForSolves = false;
+#else
+  explicit Implementation(Use) {}
 #endif
   bool UseSupernodal = false;
 };
 
-const char* SparseCholesky::Backend(Eigen::Index size)
+const char* SparseCholesky::Backend(Eigen::Index size, Use use)
 {
 #ifdef MOBIUS_HAVE_CHOLMOD
   if (size >= SupernodalMinimumSize)
   {
     return "CHOLMOD supernodal (METIS)";
   }
+  if (use == Use::ManySolves)
+  {
+    return "CHOLMOD simplicial LDLT (AMD)";
+  }
 #else
   (void)size;
+  (void)use;
 #endif
   return "Eigen simplicial LDLT (AMD)";
 }
 
-SparseCholesky::SparseCholesky()
-  : Impl(new Implementation)
+SparseCholesky::SparseCholesky(Use use)
+  : Impl(new Implementation(use))
 {
 }
 
@@ -180,11 +196,17 @@ bool SparseCholesky::Analyze(const Matrix& matrix)
 {
 #ifdef MOBIUS_HAVE_CHOLMOD
   this->Impl->UseSupernodal = matrix.rows() >= SupernodalMinimumSize;
+  this->Impl->UseSimplicialForSolves = !this->Impl->UseSupernodal && this->Impl->ManySolves;
   if (this->Impl->UseSupernodal)
   {
     CallingThreadLinearAlgebra oneThread;
     this->Impl->Supernodal.analyzePattern(matrix);
     return this->Impl->Supernodal.info() == Eigen::Success;
+  }
+  if (this->Impl->UseSimplicialForSolves)
+  {
+    this->Impl->SimplicialForSolves.analyzePattern(matrix);
+    return this->Impl->SimplicialForSolves.info() == Eigen::Success;
   }
 #endif
   this->Impl->Simplicial.analyzePattern(matrix);
@@ -200,6 +222,11 @@ bool SparseCholesky::Factorize(const Matrix& matrix)
     this->Impl->Supernodal.factorize(matrix);
     return this->Impl->Supernodal.info() == Eigen::Success;
   }
+  if (this->Impl->UseSimplicialForSolves)
+  {
+    this->Impl->SimplicialForSolves.factorize(matrix);
+    return this->Impl->SimplicialForSolves.info() == Eigen::Success;
+  }
 #endif
   this->Impl->Simplicial.factorize(matrix);
   return this->Impl->Simplicial.info() == Eigen::Success;
@@ -212,6 +239,10 @@ Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rightHandSides) con
   {
     CallingThreadLinearAlgebra oneThread;
     return this->Impl->Supernodal.solve(rightHandSides);
+  }
+  if (this->Impl->UseSimplicialForSolves)
+  {
+    return this->Impl->SimplicialForSolves.solve(rightHandSides);
   }
 #endif
   return this->Impl->Simplicial.solve(rightHandSides);

@@ -7,7 +7,11 @@
 // suits surface meshes: their graphs have small separators (O(sqrt N)), so the factor's
 // fill grows as N log N. Smaller matrices (below 50,000 rows) are factored by Eigen's
 // simplicial LDL^T with AMD, which is as fast there, as is every matrix when CHOLMOD is not
-// available (same interface, same results to rounding). On large meshes the supernodal
+// available (same interface, same results to rounding). A factorization made for many
+// solves (SparseCholesky::Use::ManySolves) is CHOLMOD's simplicial LDL^T with AMD there
+// instead: its solve takes up to four right-hand sides in one pass over the factor, where
+// Eigen's makes a pass per column (20,000-vertex Laplacian: three columns 2.2 times, one
+// column 1.5 times as fast), and its analysis and factorization take about a third longer. On large meshes the supernodal
 // factorization makes the whole map several times cheaper than the simplicial one (README,
 // Performance). Debian's CHOLMOD calls the reference BLAS unless an optimized one
 // (OpenBLAS) is installed as the libblas.so.3 alternative; the dense kernels are then a
@@ -28,7 +32,16 @@ class SparseCholesky
 public:
   using Matrix = Eigen::SparseMatrix<double>; // column-major, int indices
 
-  SparseCholesky();
+  /// What the factorization is for: a few solves each (the conformal flow factorizes a new
+  /// matrix at every step) or many (the polish solves for three columns at each of its
+  /// iterations with one factorization).
+  enum class Use
+  {
+    FewSolves,
+    ManySolves
+  };
+
+  explicit SparseCholesky(Use use = Use::FewSolves);
   ~SparseCholesky();
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
@@ -43,8 +56,9 @@ public:
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& rightHandSides) const;
 
   /// The factorization this build uses for a matrix of `size` rows: CHOLMOD supernodal
-  /// from 50,000 rows on (when built with it), Eigen's simplicial LDL^T below.
-  static const char* Backend(Eigen::Index size);
+  /// from 50,000 rows on (when built with it), below that Eigen's simplicial LDL^T, or
+  /// CHOLMOD's for many solves.
+  static const char* Backend(Eigen::Index size, Use use = Use::FewSolves);
 
 private:
   struct Implementation;

@@ -72,28 +72,68 @@ double SurfaceWalker::Walk(
   const Eigen::Vector3d& q, Index& t, Eigen::Vector3d& weights, bool insideIsEnough) const
 {
   double best = this->Closest(q, t, weights);
-  if (insideIsEnough && weights.minCoeff() > 0)
+  if (insideIsEnough)
   {
-    return best;
+    return this->QuickWalk(q, t, weights, best);
   }
-  for (int step = 0; step < 64; ++step)
+  for (int step = 0; step < kMaximumWalkSteps; ++step)
   {
     Index next = t;
     for (int k = 0; k < 3; ++k)
     {
-      const Index v = this->Faces(t, k);
-      for (Index j = this->VertexFaces.Begin(v); j < this->VertexFaces.End(v); ++j)
-      {
-        const Index u = this->VertexFaces.Items[j];
-        Eigen::Vector3d w;
-        const double d = u == t ? best : this->Closest(q, u, w);
-        if (d < best)
-        {
-          best = d;
-          next = u;
-          weights = w;
-        }
-      }
+      this->CloserAround(q, this->Faces(t, k), t, best, next, weights);
+    }
+    if (next == t)
+    {
+      break;
+    }
+    t = next;
+  }
+  return best;
+}
+
+void SurfaceWalker::CloserAround(const Eigen::Vector3d& q, Index v, Index t, double& best,
+  Index& next, Eigen::Vector3d& weights) const
+{
+  for (Index j = this->VertexFaces.Begin(v); j < this->VertexFaces.End(v); ++j)
+  {
+    const Index u = this->VertexFaces.Items[j];
+    if (u == t)
+    {
+      continue;
+    }
+    Eigen::Vector3d w;
+    const double d = this->Closest(q, u, w);
+    if (d < best)
+    {
+      best = d;
+      next = u;
+      weights = w;
+    }
+  }
+}
+
+double SurfaceWalker::QuickWalk(
+  const Eigen::Vector3d& q, Index& t, Eigen::Vector3d& weights, double best) const
+{
+  for (int step = 0; step < kMaximumWalkSteps && weights.minCoeff() <= 0; ++step)
+  {
+    Index next = t;
+    const int zeros = (weights.array() <= 0).count();
+    if (zeros == 1)
+    {
+      // On an edge: the triangles around its ends.
+      int k = 0;
+      weights.minCoeff(&k);
+      this->CloserAround(q, this->Faces(t, (k + 1) % 3), t, best, next, weights);
+      this->CloserAround(q, this->Faces(t, (k + 2) % 3), t, best, next, weights);
+    }
+    else
+    {
+      // At a corner: the triangles around it.
+      int k = 0;
+      weights.maxCoeff(&k);
+      this->CloserAround(q, this->Faces(t, k), t, best, next, weights);
     }
     if (next == t)
     {
