@@ -381,10 +381,13 @@ const std::vector<Option>& Options()
         "keep the spectral map: no geometric polish (ARAP\n"
         "non-rigid ICP of the source onto the target) after it",
         &PipelineOptions::GeometricPolish, false),
-      PipelineFlag("--both-directions",
-        "polish the map the other way too (a second thread)\n"
-        "and average each point with its inverse: a few\n"
-        "percent more accurate, a second polish's time",
+      PipelineFlag("--one-direction",
+        "polish the map from source to target only; by default\n"
+        "it is also polished the other way (a second thread)\n"
+        "and each point averaged with its inverse: about 3%\n"
+        "more accurate, a second polish's time",
+        &PipelineOptions::BothDirections, false),
+      PipelineFlag("--both-directions", "the default (see --one-direction)",
         &PipelineOptions::BothDirections, true),
       PipelineChoice("--output-geometry", "--output-geometry G",
         "target | source: where OUT.vtp's points are (default target)", { "target", "source" },

@@ -57,7 +57,7 @@ const char* const DatasetUsage =
   "  --quiet             no progress and no pipeline warnings on standard error\n"
   "  registration options, passed to the pipeline as mobius-register takes them (see\n"
   "  mobius-register --help; defaults are mobius-register's): --refine, --basis-size,\n"
-  "  --no-polish, --both-directions, --candidates, --resolution, --smoothing,\n"
+  "  --no-polish, --one-direction, --candidates, --resolution, --smoothing,\n"
   "  --transform, --degree, --iterations, --tolerance, --no-center-flow, --fill-holes,\n"
   "  --keep-largest-component, --allow-poor-maps, --threads (also the threads of the\n"
   "  scoring)\n"

@@ -41,7 +41,7 @@ def _default_options():
         "refine": True,  # spectral refinement (False: the Möbius map alone)
         "basis_size": refinement.GetBasisSize(),  # eigenfunctions of the refinement
         "polish": bool(refinement.GetGeometricPolish()),  # the refinement's geometric polish
-        # the polish in both directions, averaged (mobius-register --both-directions)
+        # the polish in both directions, averaged (False: mobius-register --one-direction)
         "both_directions": bool(refinement.GetBothDirections()),
         "resolution": registration.GetResolution(),  # scale-factor grid of the SO(3) correlation (even)
         "smoothing": registration.GetSmoothingTime(),  # heat-kernel smoothing time of the scale factors
@@ -308,8 +308,8 @@ def register(source, target, **options):
     closed genus-0 triangle surfaces (see fill_holes, keep_largest_component).
 
     Options (defaults as mobius-register's): refine=True, basis_size=80 (2 to 500), polish=True (end the
-    refinement with its geometric polish; False as --no-polish), both_directions=False (polish
-    the map the other way too and average each point with its inverse, as --both-directions),
+    refinement with its geometric polish; False as --no-polish), both_directions=True (polish
+    the map the other way too and average each point with its inverse; False as --one-direction),
     resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
     candidate=None (keep this candidate's refined map, 0..candidates-1, as --candidate, for a
