@@ -11,11 +11,11 @@
 // solves (SparseCholesky::Use::ManySolves) is CHOLMOD's simplicial LDL^T with AMD there
 // instead: its solve takes up to four right-hand sides in one pass over the factor, where
 // Eigen's makes a pass per column (20,000-vertex Laplacian: three columns 2.2 times, one
-// column 1.5 times as fast), and its analysis and factorization take about a third longer. On large meshes the supernodal
-// factorization makes the whole map several times cheaper than the simplicial one (README,
-// Performance). Debian's CHOLMOD calls the reference BLAS unless an optimized one
-// (OpenBLAS) is installed as the libblas.so.3 alternative; the dense kernels are then a
-// large part of the time.
+// column 1.5 times as fast), and its analysis and factorization take about a third longer.
+// On large meshes the supernodal factorization makes the whole map several times cheaper
+// than the simplicial one (README, Performance). Debian's CHOLMOD calls the reference BLAS
+// unless an optimized one (OpenBLAS) is installed as the libblas.so.3 alternative; the
+// dense kernels are then a large part of the time.
 #ifndef mobius_SparseCholesky_h
 #define mobius_SparseCholesky_h
 
