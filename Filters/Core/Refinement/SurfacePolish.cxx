@@ -23,9 +23,10 @@ double TotalArea(const Points& points, const Triangles& triangles)
 }
 
 // The rotation R maximizing f(R) = tr(R^T A), one Newton step on from the unit quaternion
-// q (which it updates) over rotations R <- exp([w]x) R. To second order f changes by
-// w.t - w^T H w / 2 with the torque t = sum_c r_c x a_c (r_c, a_c: columns) and
-// H = tr(P) I - (P + P^T) / 2, P = A R^T; the step is w = H^-1 t. Near the optimum P is
+// q (which it updates; r is its matrix, as the last step returned it) over rotations
+// R <- exp([w]x) R. To second order f changes by w.t - w^T H w / 2 with the torque
+// t = sum_c r_c x a_c (r_c, a_c: columns) and H = tr(P) I - (P + P^T) / 2, P = A R^T; the
+// step is w = H^-1 t. Near the optimum P is
 // A's symmetric polar factor and H's eigenvalues are sums of two of A's singular values:
 // the steps converge quadratically, so one per iteration of the polish, warm started from
 // the last, keeps up with its slowly moving A. (Müller, Bender, Chentanez & Macklin, "A
@@ -35,9 +36,9 @@ double TotalArea(const Points& points, const Triangles& triangles)
 // its FAUST_r maps came out about 1% worse; one Newton step costs about as much as 2 of
 // them.) Where H is not positive definite, far from the optimum, that scaled step is taken
 // instead. The first iteration, whose start may be any rotation, takes an SVD.
-Eigen::Matrix3d NearestRotation(const Eigen::Matrix3d& a, Eigen::Quaterniond& q)
+Eigen::Matrix3d NearestRotation(
+  const Eigen::Matrix3d& a, const Eigen::Matrix3d& r, Eigen::Quaterniond& q)
 {
-  const Eigen::Matrix3d r = q.toRotationMatrix();
   const Eigen::Vector3d torque =
     r.col(0).cross(a.col(0)) + r.col(1).cross(a.col(1)) + r.col(2).cross(a.col(2));
   const Eigen::Matrix3d p = a * r.transpose();
@@ -213,7 +214,7 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
         }
         else
         {
-          r = NearestRotation(covariance, quaternions[i]);
+          r = NearestRotation(covariance, rotations[i], quaternions[i]);
         }
         rotations[i] = r;
 
