@@ -51,8 +51,11 @@ struct SurfacePolishParameters
   /// scale of an edge.
   double Fit = 1.0;
   /// Weight of the pull back to the spectral map: small, it only keeps directions the
-  /// geometry does not fix (sliding along a featureless cylinder) where they were.
-  double Anchor = 0.005;
+  /// geometry does not fix (sliding along a featureless cylinder) where they were. Any more
+  /// holds back the slides the polish is for (docs/accuracy.md, "The polish's anchor":
+  /// 0.005 and 0.02 score worse on FAUST_r, bent and re-triangulated copies; 0 and 0.001
+  /// no better than this).
+  double Anchor = 0.002;
   /// Closest points farther than this many mean target edge lengths are not trusted.
   double RejectDistance = 3.0;
   /// Closest points whose target normal makes a larger angle than this cosine allows with
