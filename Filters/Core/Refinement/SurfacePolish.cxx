@@ -112,6 +112,36 @@ WeightedEdges WeightedEdgesOf(const WeightedNeighbors& neighbors, const Points& 
   }
   return edges;
 }
+
+// The step from the closest point c (in target triangle t, at barycentrics `weights`) that
+// matches the source curvature h_i: minimizing |p - c|^2 + w2 (h_i - h(p))^2 over p in the
+// triangle's plane, h linear there, gives p - c = w2 (h_i - h(c)) g / (1 + w2 |g|^2) with g
+// the gradient of h. At most an edge long: beyond that h is not linear any more.
+Eigen::Vector3d CurvatureStep(const Points& targetPoints, const Triangles& targetTriangles,
+  const Vector& targetCurvature, Index t, const Eigen::Vector3d& weights,
+  double sourceCurvature, double w2, double maximumStep)
+{
+  const Eigen::Vector3d a = targetPoints.row(targetTriangles(t, 0)).transpose(),
+                        b = targetPoints.row(targetTriangles(t, 1)).transpose(),
+                        c = targetPoints.row(targetTriangles(t, 2)).transpose();
+  const Eigen::Vector3d normal = (b - a).cross(c - a);
+  const double doubleArea = normal.norm();
+  if (!(doubleArea > 0))
+  {
+    return Eigen::Vector3d::Zero();
+  }
+  const Eigen::Vector3d h(targetCurvature[targetTriangles(t, 0)],
+    targetCurvature[targetTriangles(t, 1)], targetCurvature[targetTriangles(t, 2)]);
+  // The gradient of the linear interpolant: sum over corners of h_v (n x e_v) / 2A, e_v the
+  // edge opposite v, counterclockwise.
+  const Eigen::Vector3d unit = normal / doubleArea;
+  const Eigen::Vector3d gradient =
+    (h[0] * unit.cross(c - b) + h[1] * unit.cross(a - c) + h[2] * unit.cross(b - a)) / doubleArea;
+  Eigen::Vector3d step =
+    w2 * (sourceCurvature - weights.dot(h)) * gradient / (1.0 + w2 * gradient.squaredNorm());
+  const double length = step.norm();
+  return length > maximumStep ? Eigen::Vector3d(step * (maximumStep / length)) : step;
+}
 }
 
 bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangles,
@@ -170,7 +200,8 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
   {
     sourceNormals *= -1;
   }
-  const double reject = parameters.RejectDistance * MeanEdgeLength(targetPoints, targetTriangles);
+  const double targetEdge = MeanEdgeLength(targetPoints, targetTriangles);
+  const double reject = parameters.RejectDistance * targetEdge;
   const double reject2 = reject * reject;
   // Row-major with 3 fixed columns, like Points: the per-edge products stay fixed-size.
   Points spectral(n, 3);
@@ -185,6 +216,11 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
   const WeightedEdges edges = WeightedEdgesOf(neighbors, x);
   std::vector<char> trusted(static_cast<size_t>(n), 1);
   const int threads = ResolveThreadCount(parameters.NumberOfThreads);
+  const bool matchCurvature = parameters.CurvatureWeight > 0 &&
+    parameters.SourceCurvature.size() == n &&
+    parameters.TargetCurvature.size() == targetPoints.rows();
+  const double curvatureWeight2 =
+    parameters.CurvatureWeight * parameters.CurvatureWeight * targetArea;
 
   for (int iteration = 0; iteration < parameters.Iterations; ++iteration)
   {
@@ -229,7 +265,14 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
         const Eigen::Vector3d faceNormal = (b - a).cross(c - a).normalized();
         const double facing = faceNormal.dot(r * sourceNormals.row(i).transpose());
         trusted[i] = d2 <= reject2 && facing >= parameters.MinimumNormalCosine ? 1 : 0;
-        const Eigen::Vector3d closest = trusted[i] ? target.Point(t, weights) : q;
+        Eigen::Vector3d closest = trusted[i] ? target.Point(t, weights) : q;
+        if (trusted[i] && matchCurvature)
+        {
+          // Into the product of space and curvature: a step in the triangle's plane, at
+          // most an edge long, so within a second-order distance of the surface.
+          closest += CurvatureStep(targetPoints, targetTriangles, parameters.TargetCurvature,
+            t, weights, parameters.SourceCurvature[i], curvatureWeight2, targetEdge);
+        }
         rhs.row(i) = area[i] *
           (parameters.Fit * closest + parameters.Anchor * spectral.row(i).transpose()).transpose();
       }

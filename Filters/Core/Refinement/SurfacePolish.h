@@ -23,6 +23,15 @@
 // points by walking over the target's triangles from the last one); a vertex that ends far
 // from the target keeps its spectral point.
 //
+// Given the surfaces' smoothed mean curvatures h, c_i is moved towards the closest point in
+// the product of space and curvature: one Gauss-Newton step from c_i, in its triangle's
+// plane, on |c - p|^2 + (CurvatureWeight sqrt(target area))^2 (h_i - h(p))^2. Position alone
+// lets a map slide along a smooth part (a torso, a thigh) to wherever the rigid prior puts
+// it, which is not where the truth is when a pose or a person stretches the skin unevenly:
+// on 10 FAUST_r training pairs a map started at the ground truth (0.44) drifted to 1.44
+// without the pull to the spectral map. Curvature holds the slide where it varies
+// (docs/accuracy.md, "Curvature in the polish").
+//
 // Measured (README, Accuracy): on rotated re-triangulated copies the mean error falls from
 // 4.9e-3..7.9e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a fifth to a half, on
 // SMPL's man -> woman (not isometric: different bodies) by more than half.
@@ -56,6 +65,17 @@ struct SurfacePolishParameters
   /// 0.005 and 0.02 score worse on FAUST_r, bent and re-triangulated copies; 0 and 0.001
   /// no better than this).
   double Anchor = 0.002;
+  /// Smoothed mean curvature of each surface per vertex (SmoothedMeanCurvatures at
+  /// kPolishCurvature); both empty: positions alone.
+  Vector SourceCurvature;
+  Vector TargetCurvature;
+  /// Weight of a unit of curvature (of the unit-area surface) against distance, in units of
+  /// sqrt(target area): a mismatch of 1 counts like a distance of 0.0008 sqrt(area). In area
+  /// units, not edge lengths, so that it means the same at every resolution (bodies of
+  /// 20,000 vertices gained 1.6 times as much so). More helps FAUST_r's pairs of different
+  /// people, less SMPL's man -> woman, whose curvatures differ for real: both gain at this
+  /// weight (docs/accuracy.md, "Curvature in the polish").
+  double CurvatureWeight = 0.0008;
   /// Closest points farther than this many mean target edge lengths are not trusted.
   double RejectDistance = 3.0;
   /// Closest points whose target normal makes a larger angle than this cosine allows with

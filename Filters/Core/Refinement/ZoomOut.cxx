@@ -155,7 +155,10 @@ void PrepareSpectralSurface(const Points& points, const Triangles& triangles,
 {
   surface.Positions = points;
   surface.Normals = AreaWeightedVertexNormals(points, triangles);
-  surface.Curvature = SmoothedMeanCurvature(points, triangles, kCurvatureSmoothingTime);
+  std::vector<Vector> curvatures =
+    SmoothedMeanCurvatures(points, triangles, { kCandidateCurvature, kPolishCurvature });
+  surface.Curvature = std::move(curvatures[0]);
+  surface.FineCurvature = std::move(curvatures[1]);
   surface.Faces = triangles;
   surface.Embedding = basis.Functions;
   surface.Eigenvalues = std::move(basis.Eigenvalues);

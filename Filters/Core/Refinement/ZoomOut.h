@@ -37,9 +37,11 @@ struct SpectralSurface
   VertexLists Corners;  ///< triangles around each vertex
   std::vector<Index> Samples;      ///< vertex indices, farthest-point order
   std::vector<Index> SampleLabels; ///< per vertex: position in Samples of its nearest sample
-  /// Smoothed mean curvature per vertex (SmoothedMeanCurvature, kCurvatureSmoothingTime):
+  /// Smoothed mean curvature per vertex (kCandidateCurvature):
   /// compared between the surfaces to choose among candidate maps.
   Vector Curvature;
+  /// The same at kPolishCurvature's finer scale: the geometric polish matches it.
+  Vector FineCurvature;
   /// Triangles of samples (positions in Samples), one per mesh triangle whose corners have
   /// three different nearest samples: a coarse triangulation to check orientation on.
   std::vector<std::array<Index, 3>> SampleTriangles;
