@@ -1,6 +1,5 @@
 // What the refinement chooses its map by, and what holds a candidate on its side: the
-// smoothed mean curvature (a sphere's is constant, an ellipsoid's is largest at its tips,
-// and it does not depend on the scale); the edge stretch of a map (0 for a rigid motion or
+// edge stretch of a map (0 for a rigid motion or
 // a uniform scaling, positive for a stretch); the choice among candidates (the expected
 // orientation first, then the lower curvature difference; the runner-up is a different map
 // and the margin is measured to it); and the sphere anchor, which holds ZoomOut on the
@@ -10,7 +9,6 @@
 #include "CotangentLaplacian.h"
 #include "EdgeStretch.h"
 #include "Icosphere.h"
-#include "MeanCurvature.h"
 #include "ZoomOut.h"
 
 #include <Eigen/Geometry>
@@ -25,39 +23,6 @@ using namespace mobius;
 
 namespace
 {
-void TestSphereCurvature()
-{
-  Points points;
-  Triangles triangles;
-  MakeIcosphere(4, points, triangles);
-  // Any radius: the curvature is that of the unit-area sphere, 1 / r = sqrt(4 pi).
-  const Vector curvature =
-    SmoothedMeanCurvature(7.0 * points, triangles, kCurvatureSmoothingTime);
-  MOBIUS_CHECK(curvature.size() == points.rows());
-  MOBIUS_CHECK_NEAR(curvature.minCoeff(), std::sqrt(4 * M_PI), 0.02 * std::sqrt(4 * M_PI));
-  MOBIUS_CHECK_NEAR(curvature.maxCoeff(), std::sqrt(4 * M_PI), 0.02 * std::sqrt(4 * M_PI));
-  // Triangles facing inwards: the sign turns.
-  Triangles inward = triangles;
-  inward.col(1).swap(inward.col(2));
-  MOBIUS_CHECK(SmoothedMeanCurvature(points, inward, kCurvatureSmoothingTime).maxCoeff() < 0);
-}
-
-void TestEllipsoidCurvature()
-{
-  Points points;
-  Triangles triangles;
-  MakeIcosphere(4, points, triangles);
-  points.col(0) *= 3.0; // a cigar: sharply curved at x = +-3, flat-ish along its waist
-  const Vector curvature = SmoothedMeanCurvature(points, triangles, kCurvatureSmoothingTime);
-  Index tip = 0, waist = 0;
-  points.col(0).maxCoeff(&tip);
-  points.col(1).maxCoeff(&waist);
-  std::cout << "cigar: curvature at the tip " << curvature[tip] << ", at the waist "
-            << curvature[waist] << "\n";
-  MOBIUS_CHECK(curvature[tip] > 2 * curvature[waist]);
-  MOBIUS_CHECK(curvature.minCoeff() > 0);
-}
-
 void TestEdgeStretch()
 {
   Points points;
@@ -158,8 +123,6 @@ void TestSphereAnchor()
 
 int main()
 {
-  TestSphereCurvature();
-  TestEllipsoidCurvature();
   TestEdgeStretch();
   TestChoice();
   TestSphereAnchor();

@@ -197,8 +197,8 @@ std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface&
   // polished as a rotation of the mirrored source.
   polish.ReverseOrientation = kept.OrientationAgreement < 0.5;
   polish.Pinned = pinned;
-  polish.SourceCurvature = source.FineCurvature;
-  polish.TargetCurvature = target.FineCurvature;
+  polish.SourceCurvatures = source.PolishCurvatures;
+  polish.TargetCurvatures = target.PolishCurvatures;
   SurfacePolishInfo info;
   const bool polished = PolishSurfaceMap(source.Positions, source.Faces, target.Positions,
     target.Faces, target.Corners, dense.Triangle, dense.Barycentric, polish, info);

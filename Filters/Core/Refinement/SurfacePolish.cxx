@@ -113,13 +113,23 @@ WeightedEdges WeightedEdgesOf(const WeightedNeighbors& neighbors, const Points& 
   return edges;
 }
 
+// A curvature the closest points are moved to match: both surfaces' values per vertex and
+// the squared weight.
+struct CurvatureTerm
+{
+  const Vector* Source;
+  const Vector* Target;
+  double Weight2;
+};
+
 // The step from the closest point c (in target triangle t, at barycentrics `weights`) that
-// matches the source curvature h_i: minimizing |p - c|^2 + w2 (h_i - h(p))^2 over p in the
-// triangle's plane, h linear there, gives p - c = w2 (h_i - h(c)) g / (1 + w2 |g|^2) with g
-// the gradient of h. At most an edge long: beyond that h is not linear any more.
+// matches the curvatures h_k of source vertex i: minimizing
+// |p - c|^2 + sum_k w2_k (h_k - h_k(p))^2 over p in the triangle's plane, each h_k linear
+// there with gradient g_k, gives (I + sum_k w2_k g_k g_k^T) (p - c) = sum_k w2_k (h_k -
+// h_k(c)) g_k. At most an edge long: beyond that the h_k are not linear any more.
 Eigen::Vector3d CurvatureStep(const Points& targetPoints, const Triangles& targetTriangles,
-  const Vector& targetCurvature, Index t, const Eigen::Vector3d& weights,
-  double sourceCurvature, double w2, double maximumStep)
+  const std::vector<CurvatureTerm>& terms, Index i, Index t, const Eigen::Vector3d& weights,
+  double maximumStep)
 {
   const Eigen::Vector3d a = targetPoints.row(targetTriangles(t, 0)).transpose(),
                         b = targetPoints.row(targetTriangles(t, 1)).transpose(),
@@ -130,15 +140,26 @@ Eigen::Vector3d CurvatureStep(const Points& targetPoints, const Triangles& targe
   {
     return Eigen::Vector3d::Zero();
   }
-  const Eigen::Vector3d h(targetCurvature[targetTriangles(t, 0)],
-    targetCurvature[targetTriangles(t, 1)], targetCurvature[targetTriangles(t, 2)]);
-  // The gradient of the linear interpolant: sum over corners of h_v (n x e_v) / 2A, e_v the
+  // The gradient of a linear interpolant: sum over corners of h_v (n x e_v) / 2A, e_v the
   // edge opposite v, counterclockwise.
   const Eigen::Vector3d unit = normal / doubleArea;
-  const Eigen::Vector3d gradient =
-    (h[0] * unit.cross(c - b) + h[1] * unit.cross(a - c) + h[2] * unit.cross(b - a)) / doubleArea;
-  Eigen::Vector3d step =
-    w2 * (sourceCurvature - weights.dot(h)) * gradient / (1.0 + w2 * gradient.squaredNorm());
+  const Eigen::Vector3d ea = unit.cross(c - b) / doubleArea, eb = unit.cross(a - c) / doubleArea,
+                        ec = unit.cross(b - a) / doubleArea;
+  Eigen::Matrix3d system = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (const CurvatureTerm& term : terms)
+  {
+    const Vector& h = *term.Target;
+    const double ha = h[targetTriangles(t, 0)], hb = h[targetTriangles(t, 1)],
+                 hc = h[targetTriangles(t, 2)];
+    const Eigen::Vector3d gradient = ha * ea + hb * eb + hc * ec;
+    system.noalias() += term.Weight2 * gradient * gradient.transpose();
+    const double mismatch =
+      (*term.Source)[i] - (weights[0] * ha + weights[1] * hb + weights[2] * hc);
+    rhs += term.Weight2 * mismatch * gradient;
+  }
+  // Symmetric positive definite (at least the identity).
+  Eigen::Vector3d step = system.llt().solve(rhs);
   const double length = step.norm();
   return length > maximumStep ? Eigen::Vector3d(step * (maximumStep / length)) : step;
 }
@@ -216,11 +237,19 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
   const WeightedEdges edges = WeightedEdgesOf(neighbors, x);
   std::vector<char> trusted(static_cast<size_t>(n), 1);
   const int threads = ResolveThreadCount(parameters.NumberOfThreads);
-  const bool matchCurvature = parameters.CurvatureWeight > 0 &&
-    parameters.SourceCurvature.size() == n &&
-    parameters.TargetCurvature.size() == targetPoints.rows();
-  const double curvatureWeight2 =
-    parameters.CurvatureWeight * parameters.CurvatureWeight * targetArea;
+  // The curvatures the closest points match: those given for both surfaces.
+  std::vector<CurvatureTerm> curvatureTerms;
+  for (size_t k = 0; k < parameters.CurvatureWeights.size(); ++k)
+  {
+    if (parameters.CurvatureWeights[k] > 0 && k < parameters.SourceCurvatures.size() &&
+      k < parameters.TargetCurvatures.size() && parameters.SourceCurvatures[k].size() == n &&
+      parameters.TargetCurvatures[k].size() == targetPoints.rows())
+    {
+      const double weight = parameters.CurvatureWeights[k];
+      curvatureTerms.push_back({ &parameters.SourceCurvatures[k], &parameters.TargetCurvatures[k],
+        weight * weight * targetArea });
+    }
+  }
 
   for (int iteration = 0; iteration < parameters.Iterations; ++iteration)
   {
@@ -266,12 +295,12 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
         const double facing = faceNormal.dot(r * sourceNormals.row(i).transpose());
         trusted[i] = d2 <= reject2 && facing >= parameters.MinimumNormalCosine ? 1 : 0;
         Eigen::Vector3d closest = trusted[i] ? target.Point(t, weights) : q;
-        if (trusted[i] && matchCurvature)
+        if (trusted[i] && !curvatureTerms.empty())
         {
           // Into the product of space and curvature: a step in the triangle's plane, at
           // most an edge long, so within a second-order distance of the surface.
-          closest += CurvatureStep(targetPoints, targetTriangles, parameters.TargetCurvature,
-            t, weights, parameters.SourceCurvature[i], curvatureWeight2, targetEdge);
+          closest +=
+            CurvatureStep(targetPoints, targetTriangles, curvatureTerms, i, t, weights, targetEdge);
         }
         rhs.row(i) = area[i] *
           (parameters.Fit * closest + parameters.Anchor * spectral.row(i).transpose()).transpose();

@@ -23,14 +23,15 @@
 // points by walking over the target's triangles from the last one); a vertex that ends far
 // from the target keeps its spectral point.
 //
-// Given the surfaces' smoothed mean curvatures h, c_i is moved towards the closest point in
-// the product of space and curvature: one Gauss-Newton step from c_i, in its triangle's
-// plane, on |c - p|^2 + (CurvatureWeight sqrt(target area))^2 (h_i - h(p))^2. Position alone
-// lets a map slide along a smooth part (a torso, a thigh) to wherever the rigid prior puts
-// it, which is not where the truth is when a pose or a person stretches the skin unevenly:
-// on 10 FAUST_r training pairs a map started at the ground truth (0.44) drifted to 1.44
-// without the pull to the spectral map. Curvature holds the slide where it varies
-// (docs/accuracy.md, "Curvature in the polish").
+// Given the surfaces' smoothed curvatures h_k (mean and Gaussian), c_i is moved towards the
+// closest point in the product of space and curvature: one Gauss-Newton step from c_i, in
+// its triangle's plane, on |c - p|^2 + sum_k (CurvatureWeights[k] sqrt(target area))^2
+// (h_k,i - h_k(p))^2. Position alone lets a map slide along a smooth part (a torso, a
+// thigh) to wherever the rigid prior puts it, which is not where the truth is when a pose or
+// a person stretches the skin unevenly: on 10 FAUST_r training pairs a map started at the
+// ground truth (0.44) drifted to 1.44 without the pull to the spectral map. Curvature holds
+// the slide where it varies; the two curvatures vary in different directions, so together
+// they hold it in more places (docs/accuracy.md, "Curvature in the polish").
 //
 // Measured (README, Accuracy): on rotated re-triangulated copies the mean error falls from
 // 4.9e-3..7.9e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a fifth to a half, on
@@ -38,11 +39,13 @@
 #ifndef mobius_SurfacePolish_h
 #define mobius_SurfacePolish_h
 
+#include "Curvature.h"
 #include "MeshAdjacency.h"
 #include "MeshTypes.h"
 
 #include <Eigen/Core>
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,25 +60,28 @@ struct SurfacePolishParameters
   int Iterations = 60;
   /// Weight of the closest-point term per vertex, against the ARAP energy (whose weights
   /// per vertex sum to about 2-4 on a regular mesh): of order 1 balances the two at the
-  /// scale of an edge.
-  double Fit = 1.0;
+  /// scale of an edge. Below 1 since the closest points match curvatures, whose steps the
+  /// rigid prior then smooths more (FAUST_r training pairs: 0.6 scored 1% better than 1,
+  /// 2 4% worse; docs/accuracy.md, "Curvature in the polish").
+  double Fit = 0.6;
   /// Weight of the pull back to the spectral map: small, it only keeps directions the
   /// geometry does not fix (sliding along a featureless cylinder) where they were. Any more
   /// holds back the slides the polish is for (docs/accuracy.md, "The polish's anchor":
   /// 0.005 and 0.02 score worse on FAUST_r, bent and re-triangulated copies; 0 and 0.001
   /// no better than this).
   double Anchor = 0.002;
-  /// Smoothed mean curvature of each surface per vertex (SmoothedMeanCurvatures at
-  /// kPolishCurvature); both empty: positions alone.
-  Vector SourceCurvature;
-  Vector TargetCurvature;
-  /// Weight of a unit of curvature (of the unit-area surface) against distance, in units of
-  /// sqrt(target area): a mismatch of 1 counts like a distance of 0.0008 sqrt(area). In area
-  /// units, not edge lengths, so that it means the same at every resolution (bodies of
-  /// 20,000 vertices gained 1.6 times as much so). More helps FAUST_r's pairs of different
-  /// people, less SMPL's man -> woman, whose curvatures differ for real: both gain at this
-  /// weight (docs/accuracy.md, "Curvature in the polish").
-  double CurvatureWeight = 0.0008;
+  /// Smoothed curvatures of each surface per vertex, one vector per entry of
+  /// kPolishCurvatures (SmoothedCurvatures); empty: positions alone.
+  std::vector<Vector> SourceCurvatures;
+  std::vector<Vector> TargetCurvatures;
+  /// Weight of a unit of each curvature (of the unit-area surface) against distance, in
+  /// units of sqrt(target area): a mean curvature mismatch of 1 counts like a distance of
+  /// 0.0008 sqrt(area). In area units, not edge lengths, so that it means the same at every
+  /// resolution (bodies of 20,000 vertices gained 1.6 times as much so). More helps FAUST_r's
+  /// pairs of different people, less SMPL's man -> woman, whose curvatures differ for real:
+  /// both gain at these weights. The Gaussian curvature's at twice the weight scored FAUST_r
+  /// 4% better but SMPL 24% worse (docs/accuracy.md, "Curvature in the polish").
+  std::array<double, kPolishCurvatures.size()> CurvatureWeights{ 0.0008, 0.0004 };
   /// Closest points farther than this many mean target edge lengths are not trusted.
   double RejectDistance = 3.0;
   /// Closest points whose target normal makes a larger angle than this cosine allows with
@@ -84,8 +90,9 @@ struct SurfacePolishParameters
   /// Each iteration's solution is pushed on by this share of its step from the last one
   /// (heavy-ball momentum): slides of whole parts, which the closest-point term (anchored at
   /// the last iterate along the surface) lets through only slowly, converge several times
-  /// faster.
-  double Momentum = 0.8;
+  /// faster (0.9 scored FAUST_r training pairs 1.3% better than 0.8, and with Fit 0.6 CGAL's
+  /// cow onto its bent and subdivided copies too).
+  double Momentum = 0.9;
   /// The map reverses orientation (a mirror image, e.g. a bilateral self-map): the source
   /// is mirrored first, so that rotations can follow it.
   bool ReverseOrientation = false;

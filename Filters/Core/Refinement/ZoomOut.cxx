@@ -1,7 +1,7 @@
 #include "ZoomOut.h"
 
 #include "CotangentLaplacian.h"
-#include "MeanCurvature.h"
+#include "Curvature.h"
 #include "ParallelFor.h"
 #include "SurfaceSampling.h"
 
@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <utility>
 
@@ -155,10 +156,12 @@ void PrepareSpectralSurface(const Points& points, const Triangles& triangles,
 {
   surface.Positions = points;
   surface.Normals = AreaWeightedVertexNormals(points, triangles);
-  std::vector<Vector> curvatures =
-    SmoothedMeanCurvatures(points, triangles, { kCandidateCurvature, kPolishCurvature });
+  std::vector<CurvatureScale> scales{ kCandidateCurvature };
+  scales.insert(scales.end(), kPolishCurvatures.begin(), kPolishCurvatures.end());
+  std::vector<Vector> curvatures = SmoothedCurvatures(points, triangles, scales);
   surface.Curvature = std::move(curvatures[0]);
-  surface.FineCurvature = std::move(curvatures[1]);
+  surface.PolishCurvatures.assign(
+    std::make_move_iterator(curvatures.begin() + 1), std::make_move_iterator(curvatures.end()));
   surface.Faces = triangles;
   surface.Embedding = basis.Functions;
   surface.Eigenvalues = std::move(basis.Eigenvalues);

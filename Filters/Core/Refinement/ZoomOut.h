@@ -40,8 +40,8 @@ struct SpectralSurface
   /// Smoothed mean curvature per vertex (kCandidateCurvature):
   /// compared between the surfaces to choose among candidate maps.
   Vector Curvature;
-  /// The same at kPolishCurvature's finer scale: the geometric polish matches it.
-  Vector FineCurvature;
+  /// The curvatures the geometric polish matches, one vector per entry of kPolishCurvatures.
+  std::vector<Vector> PolishCurvatures;
   /// Triangles of samples (positions in Samples), one per mesh triangle whose corners have
   /// three different nearest samples: a coarse triangulation to check orientation on.
   std::vector<std::array<Index, 3>> SampleTriangles;
