@@ -109,7 +109,8 @@ std::vector<Vector> SmoothedCurvatures(
     Vector solution = solver.solve(weighted);
     for (int step = 1; step < steps; ++step)
     {
-      solution = solver.solve(Vector(mass.cwiseProduct(solution)));
+      // From the last step's solution, which each step changes less.
+      solution = solver.solveWithGuess(Vector(mass.cwiseProduct(solution)), solution);
     }
     if (!isMean)
     {

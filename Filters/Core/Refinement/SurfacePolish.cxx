@@ -114,19 +114,23 @@ WeightedEdges WeightedEdgesOf(const WeightedNeighbors& neighbors, const Points& 
 }
 
 // A curvature the closest points are moved to match: both surfaces' values per vertex and
-// the squared weight.
+// the weight (in units of the target's lengths).
 struct CurvatureTerm
 {
   const Vector* Source;
   const Vector* Target;
-  double Weight2;
+  double Weight;
 };
+
+constexpr int kCurvatureTerms = static_cast<int>(kPolishCurvatures.size());
 
 // The step from the closest point c (in target triangle t, at barycentrics `weights`) that
 // matches the curvatures h_k of source vertex i: minimizing
-// |p - c|^2 + sum_k w2_k (h_k - h_k(p))^2 over p in the triangle's plane, each h_k linear
-// there with gradient g_k, gives (I + sum_k w2_k g_k g_k^T) (p - c) = sum_k w2_k (h_k -
-// h_k(c)) g_k. At most an edge long: beyond that the h_k are not linear any more.
+// |s|^2 + sum_k (r_k - a_k . s)^2 over steps s in the triangle's plane, with a_k = w_k g_k
+// (g_k the gradient of h_k, linear there) and r_k = w_k (h_k,i - h_k(c)), gives
+// (I + sum_k a_k a_k^T) s = sum_k r_k a_k. The solution lies in the span of the a_k: s = A x
+// with (I + A^T A) x = r, a system of one row per curvature instead of 3. At most an edge
+// long: beyond that the h_k are not linear any more.
 Eigen::Vector3d CurvatureStep(const Points& targetPoints, const Triangles& targetTriangles,
   const std::vector<CurvatureTerm>& terms, Index i, Index t, const Eigen::Vector3d& weights,
   double maximumStep)
@@ -145,21 +149,22 @@ Eigen::Vector3d CurvatureStep(const Points& targetPoints, const Triangles& targe
   const Eigen::Vector3d unit = normal / doubleArea;
   const Eigen::Vector3d ea = unit.cross(c - b) / doubleArea, eb = unit.cross(a - c) / doubleArea,
                         ec = unit.cross(b - a) / doubleArea;
-  Eigen::Matrix3d system = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-  for (const CurvatureTerm& term : terms)
+  using Gradients = Eigen::Matrix<double, 3, kCurvatureTerms>;
+  using Mismatches = Eigen::Matrix<double, kCurvatureTerms, 1>;
+  Gradients scaled = Gradients::Zero();
+  Mismatches mismatch = Mismatches::Zero();
+  for (size_t k = 0; k < terms.size(); ++k)
   {
-    const Vector& h = *term.Target;
+    const Vector& h = *terms[k].Target;
     const double ha = h[targetTriangles(t, 0)], hb = h[targetTriangles(t, 1)],
                  hc = h[targetTriangles(t, 2)];
-    const Eigen::Vector3d gradient = ha * ea + hb * eb + hc * ec;
-    system.noalias() += term.Weight2 * gradient * gradient.transpose();
-    const double mismatch =
-      (*term.Source)[i] - (weights[0] * ha + weights[1] * hb + weights[2] * hc);
-    rhs += term.Weight2 * mismatch * gradient;
+    scaled.col(k) = terms[k].Weight * (ha * ea + hb * eb + hc * ec);
+    const double here = weights[0] * ha + weights[1] * hb + weights[2] * hc;
+    mismatch[k] = terms[k].Weight * ((*terms[k].Source)[i] - here);
   }
-  // Symmetric positive definite (at least the identity).
-  Eigen::Vector3d step = system.llt().solve(rhs);
+  Eigen::Matrix<double, kCurvatureTerms, kCurvatureTerms> gram = scaled.transpose() * scaled;
+  gram.diagonal().array() += 1.0; // positive definite
+  Eigen::Vector3d step = scaled * gram.llt().solve(mismatch);
   const double length = step.norm();
   return length > maximumStep ? Eigen::Vector3d(step * (maximumStep / length)) : step;
 }
@@ -245,9 +250,8 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
       k < parameters.TargetCurvatures.size() && parameters.SourceCurvatures[k].size() == n &&
       parameters.TargetCurvatures[k].size() == targetPoints.rows())
     {
-      const double weight = parameters.CurvatureWeights[k];
       curvatureTerms.push_back({ &parameters.SourceCurvatures[k], &parameters.TargetCurvatures[k],
-        weight * weight * targetArea });
+        parameters.CurvatureWeights[k] * std::sqrt(targetArea) });
     }
   }
 
