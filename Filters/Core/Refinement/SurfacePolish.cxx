@@ -89,11 +89,13 @@ WeightedNeighbors NeighborsOf(const SparseMatrix& stiffness)
 }
 
 // Per ARAP edge (as in WeightedNeighbors) its weighted source vector e_ij = w_ij (x_j - x_i),
-// and per vertex their sum: both steps read them every iteration.
+// and per vertex their sum: both steps read them every iteration. Per vertex also
+// sum_j w_ij |x_j - x_i|^2, the scale of its ARAP residual.
 struct WeightedEdges
 {
   std::vector<Eigen::Vector3d> Vectors;
   std::vector<Eigen::Vector3d> Sums;
+  std::vector<double> SquaredLengths;
 };
 
 WeightedEdges WeightedEdgesOf(const WeightedNeighbors& neighbors, const Points& x)
@@ -102,15 +104,72 @@ WeightedEdges WeightedEdgesOf(const WeightedNeighbors& neighbors, const Points& 
   WeightedEdges edges;
   edges.Vectors.resize(neighbors.Items.size());
   edges.Sums.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+  edges.SquaredLengths.assign(static_cast<size_t>(n), 0.0);
   for (Index i = 0; i < n; ++i)
   {
     for (Index k = neighbors.Offsets[i]; k < neighbors.Offsets[i + 1]; ++k)
     {
-      edges.Vectors[k] = neighbors.Weights[k] * (x.row(neighbors.Items[k]) - x.row(i)).transpose();
+      const Eigen::Vector3d edge = (x.row(neighbors.Items[k]) - x.row(i)).transpose();
+      edges.Vectors[k] = neighbors.Weights[k] * edge;
       edges.Sums[i] += edges.Vectors[k];
+      edges.SquaredLengths[i] += edges.Vectors[k].dot(edge);
     }
   }
   return edges;
+}
+
+// Vertex i's ARAP residual relative to its edges' size, sum_j w_ij |y_ij - R x_ij|^2 over
+// sum_j w_ij |x_ij|^2 (y_ij = y_j - y_i, likewise x_ij), given A = sum_j w_ij y_ij x_ij^T:
+// expanded, sum_j w_ij |y_ij|^2 - 2 tr(R^T A) + sum_j w_ij |x_ij|^2.
+double RelativeResidual(const WeightedNeighbors& neighbors, const WeightedEdges& edges,
+  const Points& y, Index i, const Eigen::Matrix3d& r, const Eigen::Matrix3d& covariance)
+{
+  const double scale = edges.SquaredLengths[i];
+  if (!(scale > 0))
+  {
+    return 0;
+  }
+  double deformed = 0;
+  for (Index k = neighbors.Offsets[i]; k < neighbors.Offsets[i + 1]; ++k)
+  {
+    deformed += neighbors.Weights[k] * (y.row(neighbors.Items[k]) - y.row(i)).squaredNorm();
+  }
+  return std::max(0.0, deformed - 2 * (r.transpose() * covariance).trace() + scale) / scale;
+}
+
+// The polish's system matrix L + (fit + Anchor) D, landmarks held PinWeight times as hard.
+SparseMatrix PolishSystem(const SparseMatrix& stiffness, const Vector& area, double fit,
+  const SurfacePolishParameters& parameters)
+{
+  SparseMatrix system = stiffness;
+  for (Index i = 0; i < system.rows(); ++i)
+  {
+    system.coeffRef(i, i) += (fit + parameters.Anchor) * area[i];
+  }
+  for (const auto& pin : parameters.Pinned)
+  {
+    system.coeffRef(pin.first, pin.first) += parameters.PinWeight * fit * area[pin.first];
+  }
+  return system;
+}
+
+// The Fit gain for the rest of the polish from its map's relative ARAP residuals (see
+// SurfacePolish.h): their area-weighted mean over RigidResidual, between 1 and the maximum.
+double FitGain(const std::vector<double>& residuals, const Vector& area,
+  const SurfacePolishParameters& parameters, double& meanResidual)
+{
+  double sum = 0;
+  for (size_t i = 0; i < residuals.size(); ++i)
+  {
+    sum += area[static_cast<Index>(i)] * residuals[i];
+  }
+  meanResidual = sum / area.sum();
+  if (!(parameters.RigidResidual > 0) || !std::isfinite(meanResidual))
+  {
+    return 1.0;
+  }
+  return std::clamp(meanResidual / parameters.RigidResidual, 1.0,
+    std::max(1.0, parameters.MaximumFitGain));
 }
 
 // A curvature the closest points are moved to match: both surfaces' values per vertex and
@@ -193,29 +252,23 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
     // source; ARAP's rotations could not follow it otherwise.
     x.col(0) *= -1;
   }
-  SparseMatrix system;
+  SparseMatrix stiffness;
   CotangentStiffnessInfo stiffnessInfo;
-  if (!BuildCotangentStiffness(x, sourceTriangles, true, system, stiffnessInfo))
+  if (!BuildCotangentStiffness(x, sourceTriangles, true, stiffness, stiffnessInfo))
   {
     info.Error = stiffnessInfo.Error;
     return false;
   }
-  const WeightedNeighbors neighbors = NeighborsOf(system);
+  const WeightedNeighbors neighbors = NeighborsOf(stiffness);
   Vector area = LumpedMass(x, sourceTriangles);
   area *= static_cast<double>(n) / area.sum();
-  const double pull = parameters.Fit + parameters.Anchor;
-  for (Index i = 0; i < n; ++i)
-  {
-    system.coeffRef(i, i) += pull * area[i];
-  }
-  for (const auto& pin : parameters.Pinned)
-  {
-    system.coeffRef(pin.first, pin.first) += parameters.PinWeight * parameters.Fit * area[pin.first];
-  }
+  double fit = parameters.Fit;
+  SparseMatrix system = PolishSystem(stiffness, area, fit, parameters);
   SparseCholesky cholesky(SparseCholesky::Use::ManySolves);
+  const char* const factorError = "the polish's system could not be factored";
   if (!cholesky.Analyze(system) || !cholesky.Factorize(system))
   {
-    info.Error = "the polish's system could not be factored";
+    info.Error = factorError;
     return false;
   }
 
@@ -255,8 +308,15 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
     }
   }
 
+  // Halfway, the map's ARAP residuals set how far the rigid prior is trusted after.
+  const int measured = parameters.Iterations / 2;
+  std::vector<double> residuals;
   for (int iteration = 0; iteration < parameters.Iterations; ++iteration)
   {
+    if (iteration == measured)
+    {
+      residuals.assign(static_cast<size_t>(n), 0.0);
+    }
     Eigen::MatrixXd rhs(n, 3); // column-major, as the solver takes it
     ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
       for (Index i = begin; i < end; ++i)
@@ -286,6 +346,10 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
           r = NearestRotation(covariance, rotations[i], quaternions[i]);
         }
         rotations[i] = r;
+        if (iteration == measured)
+        {
+          residuals[i] = RelativeResidual(neighbors, edges, y, i, r, covariance);
+        }
 
         // The closest target point, if it can be trusted; else y_i itself.
         const Eigen::Vector3d q = y.row(i).transpose();
@@ -307,12 +371,12 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
             CurvatureStep(targetPoints, targetTriangles, curvatureTerms, i, t, weights, targetEdge);
         }
         rhs.row(i) = area[i] *
-          (parameters.Fit * closest + parameters.Anchor * spectral.row(i).transpose()).transpose();
+          (fit * closest + parameters.Anchor * spectral.row(i).transpose()).transpose();
       }
     });
     for (const auto& pin : parameters.Pinned)
     {
-      rhs.row(pin.first) += parameters.PinWeight * parameters.Fit * area[pin.first] *
+      rhs.row(pin.first) += parameters.PinWeight * fit * area[pin.first] *
         targetPoints.row(pin.second);
     }
     // ARAP global step's right-hand side: sum_j w_ij (R_i + R_j) / 2 (x_i - x_j)
@@ -331,6 +395,20 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
     const Points solved = cholesky.Solve(rhs);
     y = iteration > 0 ? Points(solved + parameters.Momentum * (solved - lastSolved)) : solved;
     lastSolved = solved;
+    if (iteration == measured)
+    {
+      info.FitGain = FitGain(residuals, area, parameters, info.RigidResidual);
+      if (info.FitGain > 1.0)
+      {
+        fit = parameters.Fit * info.FitGain;
+        system = PolishSystem(stiffness, area, fit, parameters);
+        if (!cholesky.Factorize(system))
+        {
+          info.Error = factorError;
+          return false;
+        }
+      }
+    }
   }
 
   // The last solution itself, not its extrapolation, onto the target.

@@ -33,6 +33,18 @@
 // the slide where it varies; the two curvatures vary in different directions, so together
 // they hold it in more places (docs/accuracy.md, "Curvature in the polish").
 //
+// How far to trust the rigid prior is measured on the pair itself. ARAP is right for a
+// near-isometric pair; between two poses (skin stretching at the joints) or two people it
+// pulls a map off the truth: FAUST_r maps started at the ground truth drifted from 0.44 to
+// 1.26 within 15 iterations, by slides that trade the true stretch for rigidity. Halfway
+// through, the polish measures the mean ARAP residual of its map, sum_j w_ij |y_j - y_i -
+// R_i (x_j - x_i)|^2 over sum_j w_ij |x_j - x_i|^2 (area-weighted). Measured: CGAL's cow
+// and man onto bent copies 0.0015-0.0024, SMPL's man -> woman (one pose) 0.0027-0.0029, the
+// hand onto a bent copy 0.005, generated pose pairs of CGAL's animals 0.002-0.009, FAUST_r
+// pairs 0.008-0.025. Above RigidResidual the closest-point fit grows in proportion for the
+// second half (at most MaximumFitGain times), so the target's shape and curvatures hold the
+// map against the rigid prior's slides (docs/accuracy.md, "Trusting the rigid prior less").
+//
 // Measured (README, Accuracy): on rotated re-triangulated copies the mean error falls from
 // 4.9e-3..7.9e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a fifth to a half, on
 // SMPL's man -> woman (not isometric: different bodies) by more than half.
@@ -82,6 +94,16 @@ struct SurfacePolishParameters
   /// both gain at these weights. The Gaussian curvature's at twice the weight scored FAUST_r
   /// 4% better but SMPL 24% worse (docs/accuracy.md, "Curvature in the polish").
   std::array<double, kPolishCurvatures.size()> CurvatureWeights{ 0.0008, 0.0004 };
+  /// Mean relative ARAP residual (see above) up to which a pair counts as near-isometric:
+  /// its map keeps Fit throughout. Above SMPL's man -> woman and CGAL's bent copies but the
+  /// hand's, below FAUST_r's pairs.
+  double RigidResidual = 0.004;
+  /// A pair's Fit for the second half of the iterations is Fit times its mean ARAP residual
+  /// over RigidResidual, at most this: FAUST_r training pairs (residuals 0.008-0.025) scored
+  /// 3% better with the gain (2.5 for most), no better at 4. One gain for every pair scored
+  /// FAUST_r alike but SMPL's man -> woman 14% worse (docs/accuracy.md, "Trusting the rigid
+  /// prior less").
+  double MaximumFitGain = 2.5;
   /// Closest points farther than this many mean target edge lengths are not trusted.
   double RejectDistance = 3.0;
   /// Closest points whose target normal makes a larger angle than this cosine allows with
@@ -107,6 +129,8 @@ struct SurfacePolishInfo
 {
   Index Rejected = 0;  ///< correspondences not trusted in the last iteration
   Index KeptSpectral = 0; ///< vertices that kept their spectral point
+  double RigidResidual = 0; ///< the mean relative ARAP residual measured halfway
+  double FitGain = 1;       ///< the Fit gain it gave the second half
   std::string Error;
 };
 
