@@ -179,7 +179,20 @@ struct CurvatureTerm
   const Vector* Source;
   const Vector* Target;
   double Weight;
+  size_t Curvature; ///< its entry of kPolishCurvatures
 };
+
+// Where the fit gained, each curvature's weight over the second half: from the first of its
+// GainedCurvatureWeights to the second, linearly in `progress` (0 to 1).
+void ScheduleCurvatureWeights(const SurfacePolishParameters& parameters, double progress,
+  double length, std::vector<CurvatureTerm>& terms)
+{
+  for (CurvatureTerm& term : terms)
+  {
+    const auto& [first, last] = parameters.GainedCurvatureWeights[term.Curvature];
+    term.Weight = (first + (last - first) * progress) * length;
+  }
+}
 
 constexpr int kCurvatureTerms = static_cast<int>(kPolishCurvatures.size());
 
@@ -304,7 +317,7 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
       parameters.TargetCurvatures[k].size() == targetPoints.rows())
     {
       curvatureTerms.push_back({ &parameters.SourceCurvatures[k], &parameters.TargetCurvatures[k],
-        parameters.CurvatureWeights[k] * std::sqrt(targetArea) });
+        parameters.CurvatureWeights[k] * std::sqrt(targetArea), k });
     }
   }
 
@@ -316,6 +329,12 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
     if (iteration == measured)
     {
       residuals.assign(static_cast<size_t>(n), 0.0);
+    }
+    else if (iteration > measured && info.FitGain > 1.0)
+    {
+      const double progress =
+        static_cast<double>(iteration - measured) / std::max(1, parameters.Iterations - 1 - measured);
+      ScheduleCurvatureWeights(parameters, progress, std::sqrt(targetArea), curvatureTerms);
     }
     Eigen::MatrixXd rhs(n, 3); // column-major, as the solver takes it
     ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
