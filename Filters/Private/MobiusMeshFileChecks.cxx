@@ -484,6 +484,41 @@ bool SkipItems(ValueReader& reader, const Element& element)
   }
   return true;
 }
+
+bool IsBlankLine(const std::string& line)
+{
+  return line.find_first_not_of(" \t\r") == std::string::npos;
+}
+
+// Whether the text from `begin` on has a line of nothing but white space.
+bool HasBlankLine(std::istream& in, std::streamoff begin)
+{
+  in.seekg(begin);
+  std::string line;
+  bool blank = false;
+  while (!blank && std::getline(in, line))
+  {
+    blank = IsBlankLine(line);
+  }
+  in.clear();
+  return blank;
+}
+
+// The lines of an ASCII block but its blank ones.
+std::string WithoutBlankLines(const std::string& block)
+{
+  std::istringstream lines(block);
+  std::string line, kept;
+  while (std::getline(lines, line))
+  {
+    if (!IsBlankLine(line))
+    {
+      kept += line;
+      kept += '\n';
+    }
+  }
+  return kept;
+}
 }
 
 std::string ReadablePLYText(const std::string& fileName)
@@ -514,7 +549,12 @@ std::string ReadablePLYText(const std::string& fileName)
     in.seekg(dataStart);
   }
   const bool lineBreakMissing = encoding == Encoding::Ascii && last != '\n';
-  if (onlyVerticesThenFaces && !lineBreakMissing)
+  // VTK's ASCII parser takes every line for an item, a blank one too: after a blank line it
+  // reads on past the end of the file and fails an assertion (found by the fuzzer,
+  // Testing/Fuzz/Regressions/ply-blank-lines-between-vertices).
+  const bool blankLines = encoding == Encoding::Ascii && HasBlankLine(in, dataStart);
+  in.seekg(dataStart);
+  if (onlyVerticesThenFaces && !lineBreakMissing && !blankLines)
   {
     return {};
   }
@@ -552,7 +592,7 @@ std::string ReadablePLYText(const std::string& fileName)
     std::string block(static_cast<std::size_t>(end - begin), '\0');
     in.seekg(begin);
     in.read(&block[0], static_cast<std::streamsize>(block.size()));
-    text += block;
+    text += encoding == Encoding::Ascii ? WithoutBlankLines(block) : block;
     // Every ASCII line ends in a line break: VTK's parser fails an assertion (which ends the
     // program) at the end of the file inside a line.
     if (encoding == Encoding::Ascii && !block.empty() && block.back() != '\n')

@@ -30,8 +30,9 @@ std::string CheckPLYFile(const std::string& fileName);
 /// (vtkPLY::get_ascii_item) or misreads the faces of a binary file on an element other than
 /// `vertex` and `face` (a material list, a camera), reads the faces only after the vertices,
 /// and fails an assertion (ending the program) on an ASCII file whose last line has no line
-/// break. The rewrite keeps the vertex element, then the face element, byte for byte with
-/// their header lines, and ends an ASCII file with a line break.
+/// break or with blank lines among its items. The rewrite keeps the vertex element, then the
+/// face element, byte for byte with their header lines (an ASCII file without its blank
+/// lines), and ends an ASCII file with a line break.
 std::string ReadablePLYText(const std::string& fileName);
 
 /// Fails when the counts in a legacy .vtk file's section headers (POINTS, POLYGONS,

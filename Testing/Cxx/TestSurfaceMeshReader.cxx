@@ -266,6 +266,11 @@ int TestHostileText(const std::string& dir)
   std::string ply = AsciiPly("3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2");
   WriteText(dir + "/unterminated.ply", ply);
   failures += ExpectMesh(dir + "/unterminated.ply", 4, 4);
+  // Blank lines among the items (some with white space or a carriage return): VTK's parser
+  // took each for an item, read past the end and failed an assertion (found by the fuzzer).
+  ply = AsciiPly("3 0 2 1\n\n3 0 1 3\n3 1 2 3\n \t\n3 0 3 2\n", "0 0 0\n\n1 0 0\r\n\r\n0 1 0\n0 0 1\n\n");
+  WriteText(dir + "/blank-lines.ply", ply);
+  failures += ExpectMesh(dir + "/blank-lines.ply", 4, 4);
   // NaN, infinite and overflowing coordinates are named as such (not "malformed", and not
   // VTK's "Unrecognized keyword: nan").
   WriteText(dir + "/nan.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 nan 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
