@@ -504,7 +504,7 @@ bool HasBlankLine(std::istream& in, std::streamoff begin)
   return blank;
 }
 
-// The lines of an ASCII block but its blank ones.
+// The lines of an ASCII block but its blank ones, each ended by a line break.
 std::string WithoutBlankLines(const std::string& block)
 {
   std::istringstream lines(block);
@@ -592,13 +592,9 @@ std::string ReadablePLYText(const std::string& fileName)
     std::string block(static_cast<std::size_t>(end - begin), '\0');
     in.seekg(begin);
     in.read(&block[0], static_cast<std::streamsize>(block.size()));
+    // Every ASCII line ends in a line break (WithoutBlankLines ends the last one too): VTK's
+    // parser fails an assertion (which ends the program) at the end of the file inside a line.
     text += encoding == Encoding::Ascii ? WithoutBlankLines(block) : block;
-    // Every ASCII line ends in a line break: VTK's parser fails an assertion (which ends the
-    // program) at the end of the file inside a line.
-    if (encoding == Encoding::Ascii && !block.empty() && block.back() != '\n')
-    {
-      text += '\n';
-    }
   }
   return in ? text : std::string();
 }

@@ -271,6 +271,13 @@ int TestHostileText(const std::string& dir)
   ply = AsciiPly("3 0 2 1\n\n3 0 1 3\n3 1 2 3\n \t\n3 0 3 2\n", "0 0 0\n\n1 0 0\r\n\r\n0 1 0\n0 0 1\n\n");
   WriteText(dir + "/blank-lines.ply", ply);
   failures += ExpectMesh(dir + "/blank-lines.ply", 4, 4);
+  // Faces first, the vertices last without a final line break: the rewrite puts the vertices
+  // first, and no blank line may come between them and the faces.
+  WriteText(dir + "/faces-first.ply",
+    "ply\nformat ascii 1.0\nelement face 4\nproperty list uchar int vertex_indices\n"
+    "element vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"
+    "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n0 0 0\n1 0 0\n0 1 0\n0 0 1");
+  failures += ExpectMesh(dir + "/faces-first.ply", 4, 4);
   // NaN, infinite and overflowing coordinates are named as such (not "malformed", and not
   // VTK's "Unrecognized keyword: nan").
   WriteText(dir + "/nan.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 nan 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");

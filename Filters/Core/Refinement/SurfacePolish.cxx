@@ -182,15 +182,17 @@ struct CurvatureTerm
   size_t Curvature; ///< its entry of kPolishCurvatures
 };
 
-// Where the fit gained, each curvature's weight over the second half: from the first of its
-// GainedCurvatureWeights to the second, linearly in `progress` (0 to 1).
+// Where the fit gained, each curvature's weight over the second half: its CurvatureWeights
+// times the first of its GainedCurvatureScales to times the second, linearly in `progress`
+// (0 to 1).
 void ScheduleCurvatureWeights(const SurfacePolishParameters& parameters, double progress,
   double length, std::vector<CurvatureTerm>& terms)
 {
   for (CurvatureTerm& term : terms)
   {
-    const auto& [first, last] = parameters.GainedCurvatureWeights[term.Curvature];
-    term.Weight = (first + (last - first) * progress) * length;
+    const auto& [first, last] = parameters.GainedCurvatureScales[term.Curvature];
+    term.Weight =
+      parameters.CurvatureWeights[term.Curvature] * (first + (last - first) * progress) * length;
   }
 }
 
