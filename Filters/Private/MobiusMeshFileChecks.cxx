@@ -551,10 +551,12 @@ std::string ReadablePLYText(const std::string& fileName)
   const bool lineBreakMissing = encoding == Encoding::Ascii && last != '\n';
   // VTK's ASCII parser takes every line for an item, a blank one too: after a blank line it
   // reads on past the end of the file and fails an assertion (found by the fuzzer,
-  // Testing/Fuzz/Regressions/ply-blank-lines-between-vertices).
-  const bool blankLines = encoding == Encoding::Ascii && HasBlankLine(in, dataStart);
+  // Testing/Fuzz/Regressions/ply-blank-lines-between-vertices). Looked for only in a file
+  // that would otherwise be read as it is: a rewrite drops them anyway.
+  const bool readableAsIs = onlyVerticesThenFaces && !lineBreakMissing &&
+    !(encoding == Encoding::Ascii && HasBlankLine(in, dataStart));
   in.seekg(dataStart);
-  if (onlyVerticesThenFaces && !lineBreakMissing && !blankLines)
+  if (readableAsIs)
   {
     return {};
   }
