@@ -29,11 +29,14 @@ struct LaplaceBeltramiBasis
 /// the lumped one, both on the intrinsic Delaunay triangulation (see BuildMassMatrix and the
 /// README's Accuracy section: 0.5 makes the eigenfunctions of a mesh and of a
 /// re-triangulation of it agree better, but maps some bent or twisted pairs worse and takes
-/// longer, so it is not the default), by shift-invert Lanczos (Spectra) on a sparse
-/// Cholesky factorization, with single-precision Lanczos vectors and a double-precision
+/// longer, so it is not the default), by shift-invert Lanczos (Spectra) on sparse
+/// Cholesky factorizations, with single-precision Lanczos vectors and a double-precision
 /// Rayleigh-Ritz step (eigenfunctions mass-orthonormal to double precision; eigenvalues the
-/// Rayleigh quotients). Needs a closed, manifold, oriented mesh. Returns false with `error`
-/// set if the Laplacian cannot be built or the eigensolver does not converge.
+/// Rayleigh quotients). More than 40 eigenpairs are found in slices of the spectrum (one
+/// shift per window of about 40; docs/accuracy.md, "Refinement cost"), checked complete by
+/// the factorization's inertia, with one window as the fallback. Needs a closed, manifold,
+/// oriented mesh. Returns false with `error` set if the Laplacian cannot be built or the
+/// eigensolver does not converge.
 bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangles, int count,
   LaplaceBeltramiBasis& basis, std::string& error, double consistentMassShare = 0.0);
 
