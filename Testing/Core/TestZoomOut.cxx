@@ -1,9 +1,10 @@
 // Spectral refinement core: the Laplace-Beltrami basis of a sphere has the known spectrum
 // and is mass-orthonormal, with the blended mass matrix nearer the exact spectrum than the
 // lumped one; a basis of many functions (found in slices of the spectrum) is the lowest part
-// of the whole spectrum, none missed or repeated; ZoomOut recovers the identity map of a shape without symmetries
-// from a perturbed start, and an isometric (rigidly moved) copy with another vertex order;
-// the orientation check turns a symmetric shape's mirror map into the identity.
+// of the whole spectrum, none missed or repeated; ZoomOut recovers the identity map of a
+// shape without symmetries from a perturbed start, and an isometric (rigidly moved) copy
+// with another vertex order; the orientation check turns a symmetric shape's mirror map
+// into the identity.
 #include "CoreTest.h"
 #include "CotangentLaplacian.h"
 #include "Icosphere.h"

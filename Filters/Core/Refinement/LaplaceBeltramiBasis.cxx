@@ -178,38 +178,15 @@ Eigen::Index EigenvaluesBelow(
   return (factorization.Factorization.vectorD().array() < 0).count();
 }
 
-// Rayleigh-Ritz in double precision on the span of `vectors` (n x k, nearly orthonormal):
-// orthonormalizes them (Cholesky QR) and rotates them within their span into the
-// eigenvectors of A restricted to it, with the Rayleigh quotients as eigenvalues, ascending.
-// Turns the single-precision Lanczos vectors into a basis orthonormal to double precision.
-bool RayleighRitz(const SparseMatrix& stiffness, const MassRoot& root,
-  Eigen::MatrixXd& vectors, Vector& values)
-{
-  const Eigen::LLT<Eigen::MatrixXd> gram(vectors.transpose() * vectors);
-  if (gram.info() != Eigen::Success)
-  {
-    return false;
-  }
-  vectors = gram.matrixU().solve<Eigen::OnTheRight>(vectors); // V R^-1: orthonormal
-  const Eigen::MatrixXd scaled = root.Solve(vectors);
-  Eigen::MatrixXd projected = scaled.transpose() * (stiffness * scaled);
-  projected = 0.5 * (projected + projected.transpose()).eval();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> restricted(projected);
-  if (restricted.info() != Eigen::Success)
-  {
-    return false;
-  }
-  vectors = vectors * restricted.eigenvectors();
-  values = restricted.eigenvalues();
-  return vectors.allFinite();
-}
-
-// Rayleigh-Ritz in double precision on the span of the columns of `vectors`, which may be
-// nearly dependent (the windows of SlicedLanczos overlap, so an eigenvector can be found
-// twice): orthonormalizes them through the eigen-decomposition of their Gram matrix,
-// dropping the directions a duplicate adds, and keeps the `count` Ritz pairs of smallest
-// value, ascending. False if fewer than `count` independent directions remain.
-bool RayleighRitzOnUnion(const SparseMatrix& stiffness, const MassRoot& root, int count,
+// Rayleigh-Ritz in double precision on the span of the columns of `vectors`: orthonormalizes
+// them through the eigen-decomposition of their Gram matrix and rotates them within their
+// span into the eigenvectors of A restricted to it, with the Rayleigh quotients as
+// eigenvalues; keeps the `count` of smallest value, ascending. Turns single-precision
+// Lanczos vectors into a basis orthonormal to double precision. The columns may be nearly
+// dependent (the windows of SlicedLanczos overlap, so an eigenvector can be found twice):
+// the directions a duplicate adds are dropped. False if fewer than `count` independent
+// directions remain.
+bool RayleighRitz(const SparseMatrix& stiffness, const MassRoot& root, int count,
   Eigen::MatrixXd& vectors, Vector& values)
 {
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(vectors.cols(), vectors.cols());
@@ -311,7 +288,7 @@ bool SlicedLanczos(const SparseMatrix& stiffness, const SparseMatrix& mass, cons
     vectors.middleCols(columns, part.cols()) = part;
     columns += part.cols();
   }
-  return RayleighRitzOnUnion(stiffness, root, count, vectors, values);
+  return RayleighRitz(stiffness, root, count, vectors, values);
 }
 }
 
@@ -418,7 +395,8 @@ bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangle
   }
   solved = solved ||
     (factorization.Ok() && ShiftInvertLanczos<float>(factorization, count, 1e-5, vectors) &&
-      RayleighRitz(stiffness, root, vectors, basis.Eigenvalues) && complete(basis.Eigenvalues));
+      RayleighRitz(stiffness, root, count, vectors, basis.Eigenvalues) &&
+      complete(basis.Eigenvalues));
   if (!solved)
   {
     // The solver as it was before single precision (4x slower on the man): double
@@ -432,7 +410,7 @@ bool ComputeLaplaceBeltramiBasis(const Points& points, const Triangles& triangle
     {
       const int wanted = static_cast<int>(std::min<Index>(count + extra, n - 1));
       solved = nearZero.Ok() && ShiftInvertLanczos<double>(nearZero, wanted, 1e-10, vectors) &&
-        RayleighRitz(stiffness, root, vectors, basis.Eigenvalues);
+        RayleighRitz(stiffness, root, wanted, vectors, basis.Eigenvalues);
       if (solved && wanted > count)
       {
         vectors.conservativeResize(Eigen::NoChange, count);
