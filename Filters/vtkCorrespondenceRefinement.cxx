@@ -395,6 +395,7 @@ vtkCorrespondenceRefinement::vtkCorrespondenceRefinement()
   this->BasisSize = defaults.BasisSize;
   this->StartBasisSize = defaults.StartBasisSize;
   this->ScreeningBasisSize = defaults.ScreeningBasisSize;
+  this->FullResolutionIterations = mobius::ZoomOutParameters().FullResolutionIterations;
   this->GeometricPolish = defaults.GeometricPolish;
   this->BothDirections = defaults.BothDirections;
   this->Candidate = defaults.Candidate;

@@ -156,7 +156,8 @@ public:
 
   ///@{
   /**
-   * ZoomOut iterations on all vertices after the sampled ones. Default 2.
+   * ZoomOut iterations on all vertices after the sampled ones, each with the exact nearest
+   * vertex in the spectral embedding. Default 1.
    */
   vtkSetClampMacro(FullResolutionIterations, int, 0, 100);
   vtkGetMacro(FullResolutionIterations, int);
@@ -299,7 +300,7 @@ protected:
   double BasisGrowth = 0.15;
   int ScreeningBasisSize;
   int NumberOfSamples = 1000;
-  int FullResolutionIterations = 2;
+  int FullResolutionIterations;
   bool SearchCandidates = true;
   bool RepairOrientation = true;
   double ConsistentMassShare = 0.0;

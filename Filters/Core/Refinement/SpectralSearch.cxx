@@ -3,6 +3,7 @@
 #include "ParallelFor.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace mobius
@@ -30,6 +31,151 @@ std::vector<Index> NearestRows(const RowMatrix& queries, const RowMatrix& points
       Index best = 0;
       distances.col(r).minCoeff(&best);
       nearest[begin + r] = best;
+    }
+  });
+  return nearest;
+}
+
+namespace
+{
+// Points grouped by cluster: each cluster's rows contiguous (a scan reads one block), with
+// its centre and radius.
+struct PointClusters
+{
+  std::vector<Index> Begin;   ///< cluster c: rows Begin[c] .. Begin[c + 1] - 1 of Rows
+  std::vector<Index> Members; ///< per row of Rows, the point's index
+  RowMatrix Rows;
+  Eigen::MatrixXf Centers;    ///< one row per cluster (single precision: the products)
+  Eigen::VectorXf CenterNorms;
+  Eigen::VectorXd Radius;     ///< largest distance of a member from the centre
+};
+
+PointClusters GroupPoints(const RowMatrix& points, const std::vector<Index>& cluster)
+{
+  std::vector<Index> owner(cluster.begin(), cluster.end());
+  Index count = owner.empty() ? 0 : *std::max_element(owner.begin(), owner.end()) + 1;
+  for (Index& c : owner)
+  {
+    c = c >= 0 ? c : count++;
+  }
+  PointClusters groups;
+  groups.Begin.assign(static_cast<size_t>(count) + 1, 0);
+  for (Index c : owner)
+  {
+    ++groups.Begin[static_cast<size_t>(c) + 1];
+  }
+  for (Index c = 0; c < count; ++c)
+  {
+    groups.Begin[c + 1] += groups.Begin[c];
+  }
+  groups.Members.resize(owner.size());
+  std::vector<Index> next(groups.Begin.begin(), groups.Begin.end() - 1);
+  for (Index p = 0; p < static_cast<Index>(owner.size()); ++p)
+  {
+    groups.Members[next[owner[p]]++] = p;
+  }
+  groups.Rows.resize(points.rows(), points.cols());
+  RowMatrix centers = RowMatrix::Zero(count, points.cols());
+  groups.Radius = Eigen::VectorXd::Zero(count);
+  for (Index c = 0; c < count; ++c)
+  {
+    const Index first = groups.Begin[c], size = groups.Begin[c + 1] - first;
+    for (Index m = first; m < first + size; ++m)
+    {
+      groups.Rows.row(m) = points.row(groups.Members[m]);
+    }
+    centers.row(c) = groups.Rows.middleRows(first, size).colwise().mean();
+    groups.Radius[c] = (groups.Rows.middleRows(first, size).rowwise() - centers.row(c))
+                         .rowwise()
+                         .norm()
+                         .maxCoeff();
+  }
+  groups.Centers = centers.cast<float>();
+  groups.CenterNorms = groups.Centers.rowwise().squaredNorm();
+  return groups;
+}
+
+// Scans the rows of cluster c for one nearer to `query` than `best` (squared distance);
+// partial sums stop once they pass it, as they do for most rows.
+void ScanCluster(const PointClusters& groups, Index c,
+  const Eigen::Ref<const Eigen::RowVectorXd>& query, double& best, Index& nearest)
+{
+  const Index width = groups.Rows.cols();
+  for (Index m = groups.Begin[c]; m < groups.Begin[c + 1]; ++m)
+  {
+    const double* row = groups.Rows.data() + m * width;
+    double d = 0;
+    for (Index j = 0; j < width && d < best; j += 16)
+    {
+      const Index span = std::min<Index>(16, width - j);
+      d += (Eigen::Map<const Eigen::RowVectorXd>(row + j, span) - query.segment(j, span))
+             .squaredNorm();
+    }
+    if (d < best)
+    {
+      best = d;
+      nearest = groups.Members[m];
+    }
+  }
+}
+}
+
+std::vector<Index> NearestRowsByClusters(const RowMatrix& queries, const RowMatrix& points,
+  const std::vector<Index>& cluster, int numberOfThreads)
+{
+  const Index n = queries.rows();
+  std::vector<Index> nearest(static_cast<size_t>(n), 0);
+  if (points.rows() == 0)
+  {
+    return nearest;
+  }
+  const PointClusters groups = GroupPoints(points, cluster);
+  const Index count = groups.Centers.rows();
+  // The single-precision centre distances (|c|^2 - 2 q.c + |q|^2) are lowered by more than
+  // their rounding error (1e-5 of |c|^2 + |q|^2) and the radii raised: a cluster is skipped
+  // only when it surely holds no nearer point.
+  const Eigen::ArrayXf radius = (groups.Radius.array() * (1.0 + 1e-6)).cast<float>();
+  const Index blockSize = 256;
+  const int blocks = static_cast<int>((n + blockSize - 1) / blockSize);
+  ParallelFor(blocks, ResolveThreadCount(numberOfThreads), [&](int block, int) {
+    const Index first = block * blockSize, rows = std::min(blockSize, n - first);
+    Eigen::MatrixXf distances =
+      groups.Centers * (-2.0f * queries.middleRows(first, rows).transpose().cast<float>());
+    distances.colwise() += groups.CenterNorms;
+    std::vector<Index> candidates;
+    for (Index r = 0; r < rows; ++r)
+    {
+      const auto query = queries.row(first + r);
+      const float queryNorm = static_cast<float>(query.squaredNorm());
+      const Eigen::ArrayXf centerDistance2 =
+        distances.col(r).array() + queryNorm - 1e-5f * (groups.CenterNorms.array() + queryNorm);
+      Index closest = 0;
+      centerDistance2.minCoeff(&closest);
+      double best = std::numeric_limits<double>::infinity();
+      Index bestPoint = 0;
+      ScanCluster(groups, closest, query, best, bestPoint);
+      // The clusters within reach of the first best, then each checked again against the
+      // best so far before its scan.
+      double reach = std::sqrt(best);
+      const Eigen::ArrayXf limit = static_cast<float>(reach) + radius;
+      candidates.clear();
+      for (Index c = 0; c < count; ++c)
+      {
+        if (c != closest && centerDistance2[c] <= limit[c] * limit[c])
+        {
+          candidates.push_back(c);
+        }
+      }
+      for (Index c : candidates)
+      {
+        const double bound = reach + groups.Radius[c];
+        if (static_cast<double>(centerDistance2[c]) <= bound * bound)
+        {
+          ScanCluster(groups, c, query, best, bestPoint);
+          reach = std::sqrt(best);
+        }
+      }
+      nearest[first + r] = bestPoint;
     }
   });
   return nearest;
