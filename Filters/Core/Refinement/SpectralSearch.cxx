@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace mobius
 {
@@ -142,7 +143,7 @@ std::vector<Index> NearestRowsByClusters(const RowMatrix& queries, const RowMatr
     Eigen::MatrixXf distances =
       groups.Centers * (-2.0f * queries.middleRows(first, rows).transpose().cast<float>());
     distances.colwise() += groups.CenterNorms;
-    std::vector<Index> candidates;
+    std::vector<std::pair<float, Index>> candidates;
     for (Index r = 0; r < rows; ++r)
     {
       const auto query = queries.row(first + r);
@@ -154,8 +155,8 @@ std::vector<Index> NearestRowsByClusters(const RowMatrix& queries, const RowMatr
       double best = std::numeric_limits<double>::infinity();
       Index bestPoint = 0;
       ScanCluster(groups, closest, query, best, bestPoint);
-      // The clusters within reach of the first best, then each checked again against the
-      // best so far before its scan.
+      // The clusters within reach of the first best, nearest lower bound first (the best
+      // then tightens soonest), each checked again against the best so far before its scan.
       double reach = std::sqrt(best);
       const Eigen::ArrayXf limit = static_cast<float>(reach) + radius;
       candidates.clear();
@@ -163,11 +164,14 @@ std::vector<Index> NearestRowsByClusters(const RowMatrix& queries, const RowMatr
       {
         if (c != closest && centerDistance2[c] <= limit[c] * limit[c])
         {
-          candidates.push_back(c);
+          const float lower = std::sqrt(std::max(0.0f, centerDistance2[c])) - radius[c];
+          candidates.emplace_back(lower, c);
         }
       }
-      for (Index c : candidates)
+      std::sort(candidates.begin(), candidates.end());
+      for (const auto& candidate : candidates)
       {
+        const Index c = candidate.second;
         const double bound = reach + groups.Radius[c];
         if (static_cast<double>(centerDistance2[c]) <= bound * bound)
         {
