@@ -39,17 +39,57 @@ std::vector<Index> NearestRows(const RowMatrix& queries, const RowMatrix& points
 
 namespace
 {
+// Parts of a cluster hold at most this many rows: a large cluster (a sample cell of a fine
+// mesh holds 20-100 vertices) is scanned part by part, each only if it can hold a nearer row.
+constexpr Index kPartSize = 12;
+
 // Points grouped by cluster: each cluster's rows contiguous (a scan reads one block), with
-// its centre and radius.
+// its centre and radius; each cluster split into parts of nearby rows, with theirs.
 struct PointClusters
 {
-  std::vector<Index> Begin;   ///< cluster c: rows Begin[c] .. Begin[c + 1] - 1 of Rows
+  std::vector<Index> Begin;   ///< cluster c: parts Begin[c] .. Begin[c + 1] - 1
+  std::vector<Index> PartBegin; ///< part p: rows PartBegin[p] .. PartBegin[p + 1] - 1 of Rows
   std::vector<Index> Members; ///< per row of Rows, the point's index
   RowMatrix Rows;
   Eigen::MatrixXf Centers;    ///< one row per cluster (single precision: the products)
   Eigen::VectorXf CenterNorms;
   Eigen::VectorXd Radius;     ///< largest distance of a member from the centre
+  RowMatrix PartCenters;
+  Eigen::VectorXd PartRadius;
 };
+
+// Centre (mean) and radius (largest distance from it) of rows.
+template <typename Rows>
+double CenterAndRadius(const Rows& rows, Eigen::Ref<Eigen::RowVectorXd> center)
+{
+  center = rows.colwise().mean();
+  return (rows.rowwise() - center).rowwise().norm().maxCoeff();
+}
+
+// Orders members[first, last) into parts of at most kPartSize rows, each half of its range
+// split at the median of the coordinate that spreads most; appends the parts' ends.
+void SplitIntoParts(const RowMatrix& points, std::vector<Index>& members, Index first,
+  Index last, std::vector<Index>& partEnds)
+{
+  if (last - first <= kPartSize)
+  {
+    partEnds.push_back(last);
+    return;
+  }
+  Eigen::RowVectorXd low = points.row(members[first]), high = low;
+  for (Index m = first + 1; m < last; ++m)
+  {
+    low = low.cwiseMin(points.row(members[m]));
+    high = high.cwiseMax(points.row(members[m]));
+  }
+  Index column = 0;
+  (high - low).maxCoeff(&column);
+  const Index middle = first + (last - first) / 2;
+  std::nth_element(members.begin() + first, members.begin() + middle, members.begin() + last,
+    [&](Index a, Index b) { return points(a, column) < points(b, column); });
+  SplitIntoParts(points, members, first, middle, partEnds);
+  SplitIntoParts(points, members, middle, last, partEnds);
+}
 
 PointClusters GroupPoints(const RowMatrix& points, const std::vector<Index>& cluster)
 {
@@ -59,63 +99,98 @@ PointClusters GroupPoints(const RowMatrix& points, const std::vector<Index>& clu
   {
     c = c >= 0 ? c : count++;
   }
-  PointClusters groups;
-  groups.Begin.assign(static_cast<size_t>(count) + 1, 0);
+  std::vector<Index> rowBegin(static_cast<size_t>(count) + 1, 0);
   for (Index c : owner)
   {
-    ++groups.Begin[static_cast<size_t>(c) + 1];
+    ++rowBegin[static_cast<size_t>(c) + 1];
   }
   for (Index c = 0; c < count; ++c)
   {
-    groups.Begin[c + 1] += groups.Begin[c];
+    rowBegin[c + 1] += rowBegin[c];
   }
+  PointClusters groups;
   groups.Members.resize(owner.size());
-  std::vector<Index> next(groups.Begin.begin(), groups.Begin.end() - 1);
+  std::vector<Index> next(rowBegin.begin(), rowBegin.end() - 1);
   for (Index p = 0; p < static_cast<Index>(owner.size()); ++p)
   {
     groups.Members[next[owner[p]]++] = p;
   }
-  groups.Rows.resize(points.rows(), points.cols());
-  RowMatrix centers = RowMatrix::Zero(count, points.cols());
-  groups.Radius = Eigen::VectorXd::Zero(count);
+  groups.Begin.assign(1, 0);
+  groups.PartBegin.assign(1, 0);
   for (Index c = 0; c < count; ++c)
   {
-    const Index first = groups.Begin[c], size = groups.Begin[c + 1] - first;
-    for (Index m = first; m < first + size; ++m)
-    {
-      groups.Rows.row(m) = points.row(groups.Members[m]);
-    }
-    centers.row(c) = groups.Rows.middleRows(first, size).colwise().mean();
-    groups.Radius[c] = (groups.Rows.middleRows(first, size).rowwise() - centers.row(c))
-                         .rowwise()
-                         .norm()
-                         .maxCoeff();
+    SplitIntoParts(points, groups.Members, rowBegin[c], rowBegin[c + 1], groups.PartBegin);
+    groups.Begin.push_back(static_cast<Index>(groups.PartBegin.size()) - 1);
+  }
+  groups.Rows.resize(points.rows(), points.cols());
+  for (Index m = 0; m < static_cast<Index>(groups.Members.size()); ++m)
+  {
+    groups.Rows.row(m) = points.row(groups.Members[m]);
+  }
+  const Index parts = static_cast<Index>(groups.PartBegin.size()) - 1;
+  groups.PartCenters.resize(parts, points.cols());
+  groups.PartRadius.resize(parts);
+  for (Index p = 0; p < parts; ++p)
+  {
+    const Index first = groups.PartBegin[p], size = groups.PartBegin[p + 1] - first;
+    groups.PartRadius[p] =
+      CenterAndRadius(groups.Rows.middleRows(first, size), groups.PartCenters.row(p));
+  }
+  RowMatrix centers(count, points.cols());
+  groups.Radius.resize(count);
+  for (Index c = 0; c < count; ++c)
+  {
+    const Index first = rowBegin[c], size = rowBegin[c + 1] - first;
+    groups.Radius[c] = CenterAndRadius(groups.Rows.middleRows(first, size), centers.row(c));
   }
   groups.Centers = centers.cast<float>();
   groups.CenterNorms = groups.Centers.rowwise().squaredNorm();
   return groups;
 }
 
-// Scans the rows of cluster c for one nearer to `query` than `best` (squared distance);
-// partial sums stop once they pass it, as they do for most rows.
+// Squared distance between two rows, summed in spans that stop once the sum reaches `limit`
+// (the caller only needs to know it is that far).
+double SquaredDistanceUpTo(const double* row, const Eigen::Ref<const Eigen::RowVectorXd>& query,
+  double limit)
+{
+  const Index width = query.size();
+  double d = 0;
+  for (Index j = 0; j < width && d < limit; j += 16)
+  {
+    const Index span = std::min<Index>(16, width - j);
+    d += (Eigen::Map<const Eigen::RowVectorXd>(row + j, span) - query.segment(j, span))
+           .squaredNorm();
+  }
+  return d;
+}
+
+// Scans the rows of cluster c for one nearer to `query` than `best` (squared distance),
+// part by part: a part whose centre is farther than sqrt(best) plus its radius is skipped
+// (a cluster of one part was checked as a whole already).
 void ScanCluster(const PointClusters& groups, Index c,
   const Eigen::Ref<const Eigen::RowVectorXd>& query, double& best, Index& nearest)
 {
   const Index width = groups.Rows.cols();
-  for (Index m = groups.Begin[c]; m < groups.Begin[c + 1]; ++m)
+  const bool oneTest = groups.Begin[c + 1] - groups.Begin[c] == 1;
+  for (Index p = groups.Begin[c]; p < groups.Begin[c + 1]; ++p)
   {
-    const double* row = groups.Rows.data() + m * width;
-    double d = 0;
-    for (Index j = 0; j < width && d < best; j += 16)
+    if (!oneTest)
     {
-      const Index span = std::min<Index>(16, width - j);
-      d += (Eigen::Map<const Eigen::RowVectorXd>(row + j, span) - query.segment(j, span))
-             .squaredNorm();
+      const double reach = std::sqrt(best) + groups.PartRadius[p];
+      if (SquaredDistanceUpTo(groups.PartCenters.row(p).data(), query, reach * reach) >=
+        reach * reach)
+      {
+        continue;
+      }
     }
-    if (d < best)
+    for (Index m = groups.PartBegin[p]; m < groups.PartBegin[p + 1]; ++m)
     {
-      best = d;
-      nearest = groups.Members[m];
+      const double d = SquaredDistanceUpTo(groups.Rows.data() + m * width, query, best);
+      if (d < best)
+      {
+        best = d;
+        nearest = groups.Members[m];
+      }
     }
   }
 }
