@@ -385,10 +385,10 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
     const RowMatrix mapped = GatherRows(targetEmbedding, result.NearestVertex, static_cast<int>(k));
     c = sourceEmbedding.transpose() * (source.Mass * mapped);
     transformedTarget = targetEmbedding * c.transpose();
-    // The nearest rows themselves, not a descent's local minima: on FAUST_r pairs the descent
+    // The nearest rows themselves, not a descent's local minima: on FAUST_r pairs a descent
     // stops short on 9-16% of the vertices, typically 2 edges from the nearest row and up to
-    // 30, and the maps are about 2% better without it (docs/accuracy.md, "The exact nearest
-    // vertex"). The target's sample cells are the search's clusters.
+    // 30, and maps with the nearest rows are about 2% better (docs/accuracy.md, "The exact
+    // nearest vertex"). The target's sample cells are the search's clusters.
     result.NearestVertex = NearestRowsByClusters(
       sourceEmbedding, transformedTarget, target.SampleLabels, parameters.NumberOfThreads);
     ApplyPins(pinned, result.NearestVertex);
