@@ -9,6 +9,22 @@
 
 namespace mobius
 {
+namespace
+{
+// |p|^2 - 2 q.p between rows `first` .. `first + rows - 1` of `queries` and every row of
+// `points` (norms `pointNorms`), one column per query, in single precision: the squared
+// distances less |q|^2, which does not change an argmin over the points. One column per
+// query keeps each argmin scan contiguous.
+Eigen::MatrixXf DistancesLessQueryNorm(const Eigen::MatrixXf& points,
+  const Eigen::VectorXf& pointNorms, const RowMatrix& queries, Index first, Index rows)
+{
+  Eigen::MatrixXf distances =
+    points * (-2.0f * queries.middleRows(first, rows).transpose().cast<float>());
+  distances.colwise() += pointNorms;
+  return distances;
+}
+}
+
 std::vector<Index> NearestRows(const RowMatrix& queries, const RowMatrix& points,
   int numberOfThreads)
 {
@@ -22,11 +38,8 @@ std::vector<Index> NearestRows(const RowMatrix& queries, const RowMatrix& points
   const int blocks = static_cast<int>((m + blockSize - 1) / blockSize);
   ParallelFor(blocks, ResolveThreadCount(numberOfThreads), [&](int block, int) {
     const Index begin = block * blockSize, rows = std::min(blockSize, m - begin);
-    // |q - p|^2 = |p|^2 - 2 q.p + |q|^2; the last term does not change the argmin. One
-    // column per query keeps each argmin scan contiguous.
-    Eigen::MatrixXf distances =
-      pointsF * (-2.0f * queries.middleRows(begin, rows).transpose().cast<float>());
-    distances.colwise() += pointNorms;
+    const Eigen::MatrixXf distances =
+      DistancesLessQueryNorm(pointsF, pointNorms, queries, begin, rows);
     for (Index r = 0; r < rows; ++r)
     {
       Index best = 0;
@@ -215,9 +228,8 @@ std::vector<Index> NearestRowsByClusters(const RowMatrix& queries, const RowMatr
   const int blocks = static_cast<int>((n + blockSize - 1) / blockSize);
   ParallelFor(blocks, ResolveThreadCount(numberOfThreads), [&](int block, int) {
     const Index first = block * blockSize, rows = std::min(blockSize, n - first);
-    Eigen::MatrixXf distances =
-      groups.Centers * (-2.0f * queries.middleRows(first, rows).transpose().cast<float>());
-    distances.colwise() += groups.CenterNorms;
+    const Eigen::MatrixXf distances =
+      DistancesLessQueryNorm(groups.Centers, groups.CenterNorms, queries, first, rows);
     std::vector<std::pair<float, Index>> candidates;
     for (Index r = 0; r < rows; ++r)
     {

@@ -21,9 +21,10 @@ std::vector<Index> NearestRows(const RowMatrix& queries, const RowMatrix& points
 /// The same, exact, when the points fall into clusters of nearby rows (`cluster`: a cluster
 /// number per point, e.g. its nearest sample on a mesh; -1: a cluster of its own): each
 /// query compares its distances to the clusters' centres and scans only the clusters that can
-/// hold a point nearer than the best found so far (centre distance minus cluster radius).
-/// On a spectral embedding, where the rows of neighbouring vertices are near one another, a
-/// query scans about 4 of 1000 clusters: a fraction of the exhaustive search's cost.
+/// hold a point nearer than the best found so far (centre distance minus cluster radius),
+/// and of a large cluster only the parts (at most 12 nearby rows) that can. On a spectral
+/// embedding, where the rows of neighbouring vertices are near one another, a query scans
+/// about 4 of 1000 clusters: a fraction of the exhaustive search's cost.
 std::vector<Index> NearestRowsByClusters(const RowMatrix& queries, const RowMatrix& points,
   const std::vector<Index>& cluster, int numberOfThreads);
 
