@@ -355,6 +355,40 @@ SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface
   return best;
 }
 
+namespace
+{
+// The embedding with the weighted curvatures appended as columns: each curvature over the
+// target's root mean square of it, so that source and target share one scale and a weight
+// of 1 spreads like one mass-normalized eigenfunction.
+RowMatrix WithCurvatures(const RowMatrix& embedding, const SpectralSurface& surface,
+  const SpectralSurface& target, const std::array<double, 2>& weights)
+{
+  std::vector<size_t> used;
+  for (size_t k = 0; k < weights.size(); ++k)
+  {
+    if (weights[k] != 0 && k < surface.PolishCurvatures.size() &&
+      k < target.PolishCurvatures.size() && surface.PolishCurvatures[k].size() == embedding.rows())
+    {
+      used.push_back(k);
+    }
+  }
+  if (used.empty())
+  {
+    return embedding;
+  }
+  RowMatrix out(embedding.rows(), embedding.cols() + static_cast<Eigen::Index>(used.size()));
+  out.leftCols(embedding.cols()) = embedding;
+  Eigen::Index column = embedding.cols();
+  for (size_t k : used)
+  {
+    const Vector& reference = target.PolishCurvatures[k];
+    const double rms = std::sqrt(reference.squaredNorm() / static_cast<double>(reference.size()));
+    out.col(column++) = (rms > 0 ? weights[k] / rms : 0.0) * surface.PolishCurvatures[k];
+  }
+  return out;
+}
+}
+
 DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& samples, const ZoomOutParameters& parameters,
   const std::vector<std::pair<Index, Index>>& pinned)
@@ -379,6 +413,8 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
   });
   ApplyPins(pinned, result.NearestVertex);
 
+  const RowMatrix sourceQueries =
+    WithCurvatures(sourceEmbedding, source, target, parameters.FullResolutionCurvatureWeights);
   for (int iteration = 0; iteration < parameters.FullResolutionIterations; ++iteration)
   {
     // C = Phi_S^T M_S Pi Phi_T: the mass-weighted projection, exact on all vertices.
@@ -389,8 +425,9 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
     // stops short on 9-16% of the vertices, typically 2 edges from the nearest row and up to
     // 30, and maps with the nearest rows are about 2% better (docs/accuracy.md, "The exact
     // nearest vertex"). The target's sample cells are the search's clusters.
-    result.NearestVertex = NearestRowsByClusters(
-      sourceEmbedding, transformedTarget, target.SampleLabels, parameters.NumberOfThreads);
+    result.NearestVertex = NearestRowsByClusters(sourceQueries,
+      WithCurvatures(transformedTarget, target, target, parameters.FullResolutionCurvatureWeights),
+      target.SampleLabels, parameters.NumberOfThreads);
     ApplyPins(pinned, result.NearestVertex);
   }
   result.FunctionalMap = sourceEmbedding.transpose() *

@@ -71,6 +71,13 @@ struct ZoomOutParameters
   /// Iterations on all vertices after the extension, each with the exact nearest rows: one
   /// scores as two (FAUST_r training pairs) at less than half the cost.
   int FullResolutionIterations = 1;
+  /// Weights of the smoothed mean and Gaussian curvatures (kPolishCurvatures, both
+  /// surfaces' in the target's root mean square) as extra coordinates of those iterations'
+  /// nearest-row searches, each relative to one eigenfunction. Curvature does not change with
+  /// the pose where the skin does not stretch: it holds the spectral map's slides on smooth
+  /// parts (FAUST_r training pairs: 1.344 -> 1.319 at 3, alike at 2-6, worse at 10;
+  /// docs/accuracy.md, "Curvature in the spectral map"). 0: the eigenfunctions alone.
+  std::array<double, 2> FullResolutionCurvatureWeights{ 3.0, 3.0 };
   /// The orientation the sample map should have: +1 preserved (the registration is a
   /// rotation), -1 reversed (a reflection), 0 either. When not 0, an iteration whose map
   /// comes out decisively of the other orientation is retried with the sign of one
