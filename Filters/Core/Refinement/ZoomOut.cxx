@@ -360,14 +360,20 @@ namespace
 // The embedding with the weighted curvatures appended as columns: each curvature over the
 // target's root mean square of it, so that source and target share one scale and a weight
 // of 1 spreads like one mass-normalized eigenfunction.
+// A curvature is used only if both surfaces have it, so that queries and points get the same
+// columns.
 RowMatrix WithCurvatures(const RowMatrix& embedding, const SpectralSurface& surface,
-  const SpectralSurface& target, const std::array<double, 2>& weights)
+  const SpectralSurface& source, const SpectralSurface& target,
+  const std::array<double, 2>& weights)
 {
+  auto has = [](const SpectralSurface& s, size_t k) {
+    return k < s.PolishCurvatures.size() && s.PolishCurvatures[k].size() == s.Positions.rows() &&
+      s.Positions.rows() > 0;
+  };
   std::vector<size_t> used;
   for (size_t k = 0; k < weights.size(); ++k)
   {
-    if (weights[k] != 0 && k < surface.PolishCurvatures.size() &&
-      k < target.PolishCurvatures.size() && surface.PolishCurvatures[k].size() == embedding.rows())
+    if (weights[k] != 0 && has(source, k) && has(target, k))
     {
       used.push_back(k);
     }
@@ -414,7 +420,8 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
   ApplyPins(pinned, result.NearestVertex);
 
   const RowMatrix sourceQueries =
-    WithCurvatures(sourceEmbedding, source, target, parameters.FullResolutionCurvatureWeights);
+    WithCurvatures(
+    sourceEmbedding, source, source, target, parameters.FullResolutionCurvatureWeights);
   for (int iteration = 0; iteration < parameters.FullResolutionIterations; ++iteration)
   {
     // C = Phi_S^T M_S Pi Phi_T: the mass-weighted projection, exact on all vertices.
@@ -426,7 +433,8 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
     // 30, and maps with the nearest rows are about 2% better (docs/accuracy.md, "The exact
     // nearest vertex"). The target's sample cells are the search's clusters.
     result.NearestVertex = NearestRowsByClusters(sourceQueries,
-      WithCurvatures(transformedTarget, target, target, parameters.FullResolutionCurvatureWeights),
+      WithCurvatures(transformedTarget, target, source, target,
+        parameters.FullResolutionCurvatureWeights),
       target.SampleLabels, parameters.NumberOfThreads);
     ApplyPins(pinned, result.NearestVertex);
   }
