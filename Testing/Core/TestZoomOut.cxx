@@ -3,8 +3,8 @@
 // lumped one; a basis of many functions (found in slices of the spectrum) is the lowest part
 // of the whole spectrum, none missed or repeated; ZoomOut recovers the identity map of a
 // shape without symmetries from a perturbed start, and an isometric (rigidly moved) copy
-// with another vertex order; the orientation check turns a symmetric shape's mirror map
-// into the identity.
+// with another vertex order; the curvatures join the nearest-row searches when and where
+// they should; the orientation check turns a symmetric shape's mirror map into the identity.
 #include "CoreTest.h"
 #include "CotangentLaplacian.h"
 #include "Icosphere.h"
@@ -161,15 +161,9 @@ double MeanVertexError(const std::vector<Index>& map, const std::vector<Index>& 
   return sum / map.size();
 }
 
-void TestIdentityFromPerturbedStart()
+// Every sample sent to a vertex two random steps away.
+std::vector<Index> PerturbedStart(const SpectralSurface& surface)
 {
-  Points points;
-  Triangles triangles;
-  MakeAsymmetricBlob(points, triangles);
-  SpectralSurface surface;
-  std::string error;
-  MOBIUS_CHECK(PrepareSpectralSurface(points, triangles, 40, 500, surface, error));
-  // Start: every sample sent to a vertex two random steps away.
   std::mt19937 random(7);
   std::vector<Index> start;
   for (Index s : surface.Samples)
@@ -182,6 +176,18 @@ void TestIdentityFromPerturbedStart()
     }
     start.push_back(v);
   }
+  return start;
+}
+
+void TestIdentityFromPerturbedStart()
+{
+  Points points;
+  Triangles triangles;
+  MakeAsymmetricBlob(points, triangles);
+  SpectralSurface surface;
+  std::string error;
+  MOBIUS_CHECK(PrepareSpectralSurface(points, triangles, 40, 500, surface, error));
+  const std::vector<Index> start = PerturbedStart(surface);
   MOBIUS_CHECK(MeanVertexError(start, surface.Samples, points) > 0.05);
   ZoomOutParameters parameters;
   parameters.StartSize = 10;
@@ -207,6 +213,54 @@ void TestIdentityFromPerturbedStart()
   MOBIUS_CHECK_NEAR(pointError, 0.0, 1e-9);
   std::cout << "identity: sample residual " << samples.OrthogonalityResidual << ", max point error "
             << pointError << std::endl;
+}
+
+// The curvatures in the nearest-row searches: the sample iterations take them only from
+// SampleCurvatureFromSize on, and a curvature that one surface lacks is left out on both sides
+// (the queries and the points must have the same coordinates). The pair: the blob onto a
+// copy stretched along x, so that the maps are not exact and the coordinates matter.
+void TestCurvatureCoordinates()
+{
+  Points points, stretchedPoints;
+  Triangles triangles;
+  MakeAsymmetricBlob(points, triangles);
+  stretchedPoints = points;
+  stretchedPoints.col(0) *= 1.3;
+  SpectralSurface source, target;
+  std::string error;
+  MOBIUS_CHECK(PrepareSpectralSurface(points, triangles, 40, 500, source, error));
+  MOBIUS_CHECK(PrepareSpectralSurface(stretchedPoints, triangles, 40, 500, target, error));
+  MOBIUS_CHECK(source.PolishCurvatures.size() == kPolishCurvatures.size());
+  const std::vector<Index> start = PerturbedStart(source);
+
+  ZoomOutParameters plain;
+  plain.StartSize = 10;
+  plain.FinalSize = 40;
+  plain.SampleCurvatureWeights = { 0.0, 0.0 };
+  plain.FullResolutionCurvatureWeights = { 0.0, 0.0 };
+  ZoomOutParameters curved = plain;
+  curved.SampleCurvatureWeights = { 30.0, 30.0 }; // the curvatures outweigh the eigenfunctions
+  curved.FullResolutionCurvatureWeights = { 30.0, 30.0 };
+  curved.SampleCurvatureFromSize = 0;
+  ZoomOutParameters late = curved;
+  late.SampleCurvatureFromSize = plain.FinalSize + 1;
+
+  const SampleMap withoutCurvature = ZoomOutOnSamples(source, target, start, plain);
+  MOBIUS_CHECK(ZoomOutOnSamples(source, target, start, late).TargetVertex ==
+    withoutCurvature.TargetVertex);
+  const SampleMap withCurvature = ZoomOutOnSamples(source, target, start, curved);
+  MOBIUS_CHECK(withCurvature.TargetVertex != withoutCurvature.TargetVertex);
+
+  // A source without curvatures: the target's are not compared either.
+  SpectralSurface bare = source;
+  bare.PolishCurvatures.clear();
+  MOBIUS_CHECK(ZoomOutOnSamples(bare, target, start, curved).TargetVertex ==
+    withoutCurvature.TargetVertex);
+  const DenseMap bareDense = ExtendToAllVertices(bare, target, withoutCurvature, curved);
+  MOBIUS_CHECK(bareDense.NearestVertex ==
+    ExtendToAllVertices(bare, target, withoutCurvature, plain).NearestVertex);
+  MOBIUS_CHECK(ExtendToAllVertices(source, target, withoutCurvature, curved).NearestVertex !=
+    bareDense.NearestVertex);
 }
 
 // The orientation check of ZoomOutOnSamples, on a shape whose only symmetry is the mirror
@@ -303,6 +357,7 @@ int main()
   TestMassMatrixBlend();
   TestManyEigenpairsMatchDenseSpectrum();
   TestIdentityFromPerturbedStart();
+  TestCurvatureCoordinates();
   TestOrientationCheck();
   return MOBIUS_TEST_RESULT();
 }

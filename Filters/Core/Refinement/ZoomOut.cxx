@@ -29,16 +29,76 @@ RowMatrix GatherRows(const RowMatrix& embedding, const std::vector<Index>& verti
   return rows;
 }
 
-// Rows with the anchor's coordinates appended (weighted), or the rows as they are.
-RowMatrix Anchored(const RowMatrix& rows, const RowMatrix& anchor, double weight)
+// Rows with more columns appended, or the rows as they are when there are none.
+RowMatrix Appended(const RowMatrix& rows, const RowMatrix& extra)
 {
-  if (weight == 0)
+  if (extra.cols() == 0)
   {
     return rows;
   }
-  RowMatrix out(rows.rows(), rows.cols() + anchor.cols());
-  out << rows, weight * anchor;
+  RowMatrix out(rows.rows(), rows.cols() + extra.cols());
+  out << rows, extra;
   return out;
+}
+
+// Rows with the anchor's coordinates appended (weighted), or the rows as they are.
+RowMatrix Anchored(const RowMatrix& rows, const RowMatrix& anchor, double weight)
+{
+  return weight == 0 ? rows : Appended(rows, weight * anchor);
+}
+
+using CurvatureWeightArray = std::array<double, kPolishCurvatures.size()>;
+
+// The curvatures with a weight that both surfaces have: only those are compared, so that
+// queries and points get the same columns.
+std::vector<size_t> SharedCurvatures(const SpectralSurface& source,
+  const SpectralSurface& target, const CurvatureWeightArray& weights)
+{
+  auto has = [](const SpectralSurface& s, size_t k) {
+    return k < s.PolishCurvatures.size() && s.PolishCurvatures[k].size() == s.Positions.rows() &&
+      s.Positions.rows() > 0;
+  };
+  std::vector<size_t> shared;
+  for (size_t k = 0; k < weights.size(); ++k)
+  {
+    if (weights[k] != 0 && has(source, k) && has(target, k))
+    {
+      shared.push_back(k);
+    }
+  }
+  return shared;
+}
+
+// The `shared` curvatures of `surface` at `vertices` as columns, weighted: each over the
+// target's root mean square of it, so that source and target share one scale and a weight
+// of 1 spreads like one mass-normalized eigenfunction.
+RowMatrix CurvatureColumns(const SpectralSurface& surface, const std::vector<Index>& vertices,
+  const SpectralSurface& target, const CurvatureWeightArray& weights,
+  const std::vector<size_t>& shared)
+{
+  RowMatrix columns(static_cast<Index>(vertices.size()), static_cast<Index>(shared.size()));
+  for (size_t c = 0; c < shared.size(); ++c)
+  {
+    const Vector& reference = target.PolishCurvatures[shared[c]];
+    const double rms = std::sqrt(reference.squaredNorm() / static_cast<double>(reference.size()));
+    const double scale = rms > 0 ? weights[shared[c]] / rms : 0.0;
+    for (size_t i = 0; i < vertices.size(); ++i)
+    {
+      columns(static_cast<Index>(i), static_cast<Index>(c)) =
+        scale * surface.PolishCurvatures[shared[c]][vertices[i]];
+    }
+  }
+  return columns;
+}
+
+std::vector<Index> AllVertices(Index count)
+{
+  std::vector<Index> vertices(static_cast<size_t>(count));
+  for (Index i = 0; i < count; ++i)
+  {
+    vertices[static_cast<size_t>(i)] = i;
+  }
+  return vertices;
 }
 
 // Least-squares C with A C ~ B (A, B: samples x k): the functional map of a sample map.
@@ -200,6 +260,26 @@ double ExpectedSideShare(const SpectralSurface& source, const SpectralSurface& t
   return orientation > 0 ? agreement : 1.0 - agreement;
 }
 
+// What the sample searches compare besides the eigenfunctions, per source and per target
+// sample: the anchor's coordinates (weighted), and from SampleCurvatureFromSize on the
+// curvatures.
+struct SearchColumns
+{
+  RowMatrix Source, Target;
+};
+
+SearchColumns SampleSearchColumns(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleAnchor& anchor, const CurvatureWeightArray& weights)
+{
+  const std::vector<size_t> shared = SharedCurvatures(source, target, weights);
+  SearchColumns columns;
+  columns.Source = Anchored(CurvatureColumns(source, source.Samples, target, weights, shared),
+    anchor.Source, anchor.Weight);
+  columns.Target = Anchored(CurvatureColumns(target, target.Samples, target, weights, shared),
+    anchor.Target, anchor.Weight);
+  return columns;
+}
+
 // One ZoomOut iteration's map came out as `targetVertex` from the functional map `c`: if it
 // is decisively of the wrong orientation, the sign of one eigenfunction is wrong (the mirror
 // symmetry negates the antisymmetric ones, and at the first of them the fit is a coin
@@ -209,7 +289,7 @@ double ExpectedSideShare(const SpectralSurface& source, const SpectralSurface& t
 // first antisymmetric function, which enters early. True if it tried.
 bool KeepOrientation(const SpectralSurface& source, const SpectralSurface& target,
   const RowMatrix& sourceRows, const RowMatrix& targetRows, const Eigen::MatrixXd& c,
-  const ZoomOutParameters& parameters, const SampleAnchor& anchor,
+  const ZoomOutParameters& parameters, const SearchColumns& extra,
   std::vector<Index>& targetVertex)
 {
   if (ExpectedSideShare(source, target, targetVertex, parameters.Orientation) >
@@ -218,14 +298,14 @@ bool KeepOrientation(const SpectralSurface& source, const SpectralSurface& targe
     return false;
   }
   const int k = static_cast<int>(c.rows());
-  const RowMatrix a = Anchored(sourceRows.leftCols(k), anchor.Source, anchor.Weight);
+  const RowMatrix a = Appended(sourceRows.leftCols(k), extra.Source);
   double bestShare = 1.0 - kOrientationDecided;
   for (int row = 1; row < std::min(k, kOrientationRows + 1); ++row) // row 0: the constant
   {
     Eigen::MatrixXd flipped = c;
     flipped.row(row) *= -1;
-    const std::vector<Index> nearest = NearestRows(a,
-      Anchored(targetRows.leftCols(k) * flipped.transpose(), anchor.Target, anchor.Weight),
+    const std::vector<Index> nearest = NearestRows(
+      a, Appended(targetRows.leftCols(k) * flipped.transpose(), extra.Target),
       parameters.NumberOfThreads);
     std::vector<Index> map(nearest.size());
     for (size_t i = 0; i < nearest.size(); ++i)
@@ -253,6 +333,10 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
   const RowMatrix sourceRows = GatherRows(source.Embedding, source.Samples, finalSize);
   const RowMatrix targetRows = GatherRows(target.Embedding, target.Samples, finalSize);
 
+  const SearchColumns anchored = SampleSearchColumns(source, target, anchor, {});
+  const SearchColumns withCurvatures =
+    SampleSearchColumns(source, target, anchor, parameters.SampleCurvatureWeights);
+
   SampleMap result;
   result.TargetVertex = initialTargetVertex;
   ApplyPins(anchor.Pins, result.TargetVertex);
@@ -267,9 +351,10 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     // (for an orthogonal C the same as comparing Phi_S C with Phi_T; for the shrunk C of a
     // noisy start it keeps the queries from collapsing onto the target's small rows).
     const RowMatrix candidates = targetRows.leftCols(k) * c.transpose();
-    const std::vector<Index> nearest =
-      NearestRows(Anchored(a, anchor.Source, anchor.Weight),
-        Anchored(candidates, anchor.Target, anchor.Weight), parameters.NumberOfThreads);
+    const SearchColumns& extra =
+      k >= parameters.SampleCurvatureFromSize ? withCurvatures : anchored;
+    const std::vector<Index> nearest = NearestRows(Appended(a, extra.Source),
+      Appended(candidates, extra.Target), parameters.NumberOfThreads);
     for (size_t i = 0; i < nearest.size(); ++i)
     {
       result.TargetVertex[i] = target.Samples[nearest[i]];
@@ -280,7 +365,7 @@ SampleMap ZoomOutOnSamples(const SpectralSurface& source, const SpectralSurface&
     // man, one of whose candidates stays mirrored.
     if (parameters.Orientation != 0 && orientationTries < kOrientationTries &&
       KeepOrientation(
-        source, target, sourceRows, targetRows, c, parameters, anchor, result.TargetVertex))
+        source, target, sourceRows, targetRows, c, parameters, extra, result.TargetVertex))
     {
       ++orientationTries;
     }
@@ -355,46 +440,6 @@ SampleMap RepairOrientation(const SpectralSurface& source, const SpectralSurface
   return best;
 }
 
-namespace
-{
-// The embedding with the weighted curvatures appended as columns: each curvature over the
-// target's root mean square of it, so that source and target share one scale and a weight
-// of 1 spreads like one mass-normalized eigenfunction.
-// A curvature is used only if both surfaces have it, so that queries and points get the same
-// columns.
-RowMatrix WithCurvatures(const RowMatrix& embedding, const SpectralSurface& surface,
-  const SpectralSurface& source, const SpectralSurface& target,
-  const std::array<double, 2>& weights)
-{
-  auto has = [](const SpectralSurface& s, size_t k) {
-    return k < s.PolishCurvatures.size() && s.PolishCurvatures[k].size() == s.Positions.rows() &&
-      s.Positions.rows() > 0;
-  };
-  std::vector<size_t> used;
-  for (size_t k = 0; k < weights.size(); ++k)
-  {
-    if (weights[k] != 0 && has(source, k) && has(target, k))
-    {
-      used.push_back(k);
-    }
-  }
-  if (used.empty())
-  {
-    return embedding;
-  }
-  RowMatrix out(embedding.rows(), embedding.cols() + static_cast<Eigen::Index>(used.size()));
-  out.leftCols(embedding.cols()) = embedding;
-  Eigen::Index column = embedding.cols();
-  for (size_t k : used)
-  {
-    const Vector& reference = target.PolishCurvatures[k];
-    const double rms = std::sqrt(reference.squaredNorm() / static_cast<double>(reference.size()));
-    out.col(column++) = (rms > 0 ? weights[k] / rms : 0.0) * surface.PolishCurvatures[k];
-  }
-  return out;
-}
-}
-
 DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurface& target,
   const SampleMap& samples, const ZoomOutParameters& parameters,
   const std::vector<std::pair<Index, Index>>& pinned)
@@ -419,9 +464,12 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
   });
   ApplyPins(pinned, result.NearestVertex);
 
+  const auto& weights = parameters.FullResolutionCurvatureWeights;
+  const std::vector<size_t> shared = SharedCurvatures(source, target, weights);
   const RowMatrix sourceQueries =
-    WithCurvatures(
-    sourceEmbedding, source, source, target, parameters.FullResolutionCurvatureWeights);
+    Appended(sourceEmbedding, CurvatureColumns(source, AllVertices(n), target, weights, shared));
+  const RowMatrix targetCurvatures = CurvatureColumns(
+    target, AllVertices(target.Embedding.rows()), target, weights, shared);
   for (int iteration = 0; iteration < parameters.FullResolutionIterations; ++iteration)
   {
     // C = Phi_S^T M_S Pi Phi_T: the mass-weighted projection, exact on all vertices.
@@ -433,9 +481,8 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
     // 30, and maps with the nearest rows are about 2% better (docs/accuracy.md, "The exact
     // nearest vertex"). The target's sample cells are the search's clusters.
     result.NearestVertex = NearestRowsByClusters(sourceQueries,
-      WithCurvatures(transformedTarget, target, source, target,
-        parameters.FullResolutionCurvatureWeights),
-      target.SampleLabels, parameters.NumberOfThreads);
+      Appended(transformedTarget, targetCurvatures), target.SampleLabels,
+      parameters.NumberOfThreads);
     ApplyPins(pinned, result.NearestVertex);
   }
   result.FunctionalMap = sourceEmbedding.transpose() *

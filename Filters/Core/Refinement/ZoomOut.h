@@ -11,6 +11,7 @@
 #ifndef mobius_ZoomOut_h
 #define mobius_ZoomOut_h
 
+#include "Curvature.h"
 #include "LaplaceBeltramiBasis.h"
 #include "MeshAdjacency.h"
 #include "MeshTypes.h"
@@ -72,12 +73,21 @@ struct ZoomOutParameters
   /// scores as two (FAUST_r training pairs) at less than half the cost.
   int FullResolutionIterations = 1;
   /// Weights of the smoothed mean and Gaussian curvatures (kPolishCurvatures, both
-  /// surfaces' in the target's root mean square) as extra coordinates of those iterations'
-  /// nearest-row searches, each relative to one eigenfunction. Curvature does not change with
-  /// the pose where the skin does not stretch: it holds the spectral map's slides on smooth
-  /// parts (FAUST_r training pairs: 1.344 -> 1.319 at 3, alike at 2-6, worse at 10;
+  /// surfaces' in the target's root mean square) as extra coordinates of the nearest-row
+  /// searches on all vertices, each relative to one eigenfunction. Curvature does not change
+  /// with the pose where the skin does not stretch: it holds the spectral map's slides on
+  /// smooth parts (FAUST_r training pairs: 1.344 -> 1.319 at 3, alike at 2-6, worse at 10;
   /// docs/accuracy.md, "Curvature in the spectral map"). 0: the eigenfunctions alone.
-  std::array<double, 2> FullResolutionCurvatureWeights{ 3.0, 3.0 };
+  std::array<double, kPolishCurvatures.size()> FullResolutionCurvatureWeights{ 3.0, 3.0 };
+  /// The same in the iterations on the samples, from basis size SampleCurvatureFromSize on:
+  /// after the candidates are screened (RegistrationParameters::ScreeningBasisSize, 30),
+  /// once the eigenfunctions place the limbs. Lower than on all vertices: 1,000 samples are
+  /// far apart beside the curvatures' features, and at 2-3 a sample can jump to a far one of
+  /// like curvature (a bent copy of CGAL's man came out with 0.6% of its vertices wrong).
+  /// FAUST_r training pairs: 1.321 -> 1.305 and 1.357 -> 1.339 (docs/accuracy.md, "On the
+  /// samples too").
+  std::array<double, kPolishCurvatures.size()> SampleCurvatureWeights{ 1.0, 1.0 };
+  int SampleCurvatureFromSize = 40;
   /// The orientation the sample map should have: +1 preserved (the registration is a
   /// rotation), -1 reversed (a reflection), 0 either. When not 0, an iteration whose map
   /// comes out decisively of the other orientation is retried with the sign of one
