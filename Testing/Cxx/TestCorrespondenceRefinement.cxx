@@ -3,7 +3,8 @@
 // same surface, vertex i of the mesh is vertex i of the copy) nearly so, within the issue's
 // 5e-3 and well below the spectral map without the geometric polish, and a bent, rotated
 // copy far better than the Möbius map the refinement starts from, and better polished in
-// both directions (BothDirections, the default) than in one; with the blended mass
+// both directions (BothDirections, the default: two rounds, each from the averages) than in
+// one; with the blended mass
 // matrix the rotated copy does not come out as its mirror image. Bad input gives errors.
 #include "MobiusTestUtilities.h"
 #include "vtkCorrespondenceRefinement.h"
@@ -203,11 +204,12 @@ int TestCorrespondenceRefinement(int, char*[])
   MOBIUS_EXPECT(bentError <= 0.02 && bentError <= 0.5 * mobiusError);
   // Measured 1.9e-3; without the polish's curvature terms 3.1e-3 (version 81ce314).
   MOBIUS_EXPECT(bentError <= 2.4e-3);
-  // The polish both ways, each point averaged with the other direction's inverse, against
-  // the polish from source to target alone: measured 1.79e-3 against 1.87e-3 (with the
-  // descent's nearest vertices at full resolution, before the exact search: 1.89e-3 against
-  // 2.01e-3).
-  MOBIUS_EXPECT(bentError < 0.97 * oneError);
+  // The polish both ways, each point averaged with the other direction's inverse, then
+  // both polished again from the averages (kPolishRounds), against the polish from source to
+  // target alone: measured 1.84e-3 against 2.29e-3; with one round 2.01e-3 (0.88 of it), so
+  // the bound fails without the second round (version 08e1235; with the descent's nearest
+  // vertices at full resolution, before the exact search: 1.89e-3 against 2.01e-3).
+  MOBIUS_EXPECT(bentError < 0.85 * oneError);
 
   // Bad input: a basis larger than half the mesh (642 points), and a target without
   // SurfacePoints.

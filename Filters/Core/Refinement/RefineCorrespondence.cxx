@@ -253,9 +253,46 @@ std::vector<std::pair<Index, Index>> Swapped(const std::vector<std::pair<Index, 
   return swapped;
 }
 
+// Both directions' maps polished again at once, each on its own thread; false if either
+// polish failed (its error kept).
+bool PolishBothAgain(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& forwardSamples, const SampleMap& reverseSamples,
+  const std::vector<std::pair<Index, Index>>& landmarks, int threads, DirectionMap& forward,
+  DirectionMap& reverse)
+{
+  const int each = std::max(1, threads / 2);
+  ParallelFor(2, threads, [&](int direction, int) {
+    if (direction == 0)
+    {
+      forward.PolishError =
+        PolishDenseMap(source, target, forwardSamples, each, landmarks, forward.Dense);
+    }
+    else
+    {
+      reverse.PolishError = PolishDenseMap(
+        target, source, reverseSamples, each, Swapped(landmarks), reverse.Dense);
+    }
+  });
+  return forward.PolishError.empty() && reverse.PolishError.empty();
+}
+
+// `map` (source onto target) moved towards the inverse of `other` (target onto source).
+DenseMap TowardsInverse(const SpectralSurface& source, const SpectralSurface& target,
+  const DenseMap& map, const DenseMap& other,
+  const std::vector<std::pair<Index, Index>>& landmarks, int threads)
+{
+  DenseMap averaged = map;
+  AverageWithInverse(source.Positions, source.Faces, target.Positions, target.Faces,
+    target.Corners, other.Triangle, other.Barycentric, kInverseWeight, landmarks, threads,
+    averaged.Triangle, averaged.Barycentric);
+  return averaged;
+}
+
 // The kept map extended to every vertex and polished as the options ask. In both
-// directions, each is extended and polished on its own thread, and the map is averaged with
-// the inverse of the other (InverseAveraging).
+// directions, each is extended and polished on its own thread, and each map is averaged
+// with the inverse of the other (InverseAveraging), polished again from there
+// (kPolishRounds, on surfaces of up to kRepolishMaximumVertices), and the forward map
+// averaged once more.
 void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<std::pair<Index, Index>>& landmarks, const ZoomOutParameters& parameters,
   const CorrespondenceRefinementOptions& options, RefinedCorrespondence& refined)
@@ -284,15 +321,25 @@ void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target
         target, source, reverseSamples, parameters, Swapped(landmarks), true, each);
     }
   });
-  refined.Dense = std::move(forward.Dense);
-  refined.PolishError = forward.PolishError;
   refined.ExtensionSeconds = forward.ExtensionSeconds;
-  if (forward.PolishError.empty() && reverse.PolishError.empty())
+  bool polished = forward.PolishError.empty() && reverse.PolishError.empty();
+  const bool small = std::max(source.Positions.rows(), target.Positions.rows()) <=
+    kRepolishMaximumVertices;
+  const int rounds = small ? kPolishRounds : 1;
+  for (int round = 1; round < rounds && polished; ++round)
   {
-    AverageWithInverse(source.Positions, source.Faces, target.Positions, target.Faces,
-      target.Corners, reverse.Dense.Triangle, reverse.Dense.Barycentric, kInverseWeight,
-      landmarks, threads, refined.Dense.Triangle, refined.Dense.Barycentric);
+    DenseMap averaged =
+      TowardsInverse(source, target, forward.Dense, reverse.Dense, landmarks, threads);
+    reverse.Dense =
+      TowardsInverse(target, source, reverse.Dense, forward.Dense, Swapped(landmarks), threads);
+    forward.Dense = std::move(averaged);
+    polished = PolishBothAgain(
+      source, target, refined.Kept, reverseSamples, landmarks, threads, forward, reverse);
   }
+  refined.PolishError = forward.PolishError;
+  refined.Dense = polished
+    ? TowardsInverse(source, target, forward.Dense, reverse.Dense, landmarks, threads)
+    : std::move(forward.Dense);
 }
 }
 
