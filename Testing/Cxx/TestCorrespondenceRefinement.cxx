@@ -4,8 +4,8 @@
 // 5e-3 and well below the spectral map without the geometric polish, and a bent, rotated
 // copy far better than the Möbius map the refinement starts from, and better polished in
 // both directions (BothDirections, the default: two rounds, each from the averages) than in
-// one; with the blended mass
-// matrix the rotated copy does not come out as its mirror image. Bad input gives errors.
+// one; with the blended mass matrix the rotated copy does not come out as its mirror image.
+// Bad input gives errors.
 #include "MobiusTestUtilities.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"

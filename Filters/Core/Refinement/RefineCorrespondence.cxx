@@ -323,9 +323,9 @@ void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target
   });
   refined.ExtensionSeconds = forward.ExtensionSeconds;
   bool polished = forward.PolishError.empty() && reverse.PolishError.empty();
-  const bool small = std::max(source.Positions.rows(), target.Positions.rows()) <=
+  const bool repolish = std::max(source.Positions.rows(), target.Positions.rows()) <=
     kRepolishMaximumVertices;
-  const int rounds = small ? kPolishRounds : 1;
+  const int rounds = repolish ? kPolishRounds : 1;
   for (int round = 1; round < rounds && polished; ++round)
   {
     DenseMap averaged =
