@@ -10,9 +10,11 @@
 #include "Curvature.h"
 #include "MeshAdjacency.h"
 #include "SurfacePolish.h"
+#include "SurfaceWalk.h"
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <vector>
@@ -174,11 +176,9 @@ void TestSlidMap(bool mirrored)
 // hold and trusts the fit more for its second half. (Whether that pays is measured on real
 // pose pairs, docs/accuracy.md: on this blob the curvatures change with the stretch too, and
 // the map drifts about as far either way.)
-void TestStretchedTarget()
+// The blob stretched unevenly, vertex for vertex: not isometric, so the polish's fit gains.
+Points StretchedCopy(const Points& source)
 {
-  Points source;
-  Triangles triangles;
-  MakeBlob(source, triangles);
   Points target = source;
   for (Index i = 0; i < target.rows(); ++i)
   {
@@ -186,6 +186,15 @@ void TestStretchedTarget()
     target.row(i) << p.x() * (1 + 0.4 * std::sin(2 * p.y())),
       p.y() * (1 + 0.3 * std::cos(2 * p.x())), p.z();
   }
+  return target;
+}
+
+void TestStretchedTarget()
+{
+  Points source;
+  Triangles triangles;
+  MakeBlob(source, triangles);
+  const Points target = StretchedCopy(source);
   const VertexLists corners = VertexTriangles(target.rows(), triangles);
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   // The true image of source vertex i is target vertex i: measure against the target.
@@ -214,6 +223,61 @@ void TestStretchedTarget()
   MOBIUS_CHECK(kept.FitGain == 1.0 && kept.RigidResidual == gained.RigidResidual);
   MOBIUS_CHECK(withGain != without); // the second half did run with the larger fit
 }
+// The polish run a few iterations at a time (SurfacePolisher, as the two directions of the
+// refinement run it between their meetings) is the polish run at once, and a polish moved
+// to a map (MoveTo) goes on from that map's points.
+void TestPolishInSteps()
+{
+  Points source;
+  Triangles triangles;
+  MakeBlob(source, triangles);
+  const Points target = StretchedCopy(source);
+  const VertexLists corners = VertexTriangles(target.rows(), triangles);
+  const Map start = SlidMap(target, target, triangles, Eigen::Matrix3d::Identity(), 0.15);
+  SurfacePolishParameters parameters;
+  Map atOnce = start;
+  SurfacePolishInfo info;
+  MOBIUS_CHECK(PolishSurfaceMap(source, triangles, target, triangles, corners, atOnce.Triangle,
+    atOnce.Barycentric, parameters, info));
+
+  SurfacePolisher polisher;
+  MOBIUS_CHECK(polisher.Start(source, triangles, target, triangles, corners, start.Triangle,
+    start.Barycentric, parameters));
+  Map inSteps;
+  while (polisher.Iterations() < parameters.Iterations)
+  {
+    MOBIUS_CHECK(polisher.Iterate(7)); // across the halfway measurement too
+    polisher.CurrentMap(inSteps.Triangle, inSteps.Barycentric);
+  }
+  MOBIUS_CHECK(polisher.Iterations() == parameters.Iterations);
+  MOBIUS_CHECK(polisher.Info().FitGain == info.FitGain);
+  double largest = 0;
+  for (Index i = 0; i < source.rows(); ++i)
+  {
+    MOBIUS_CHECK(inSteps.Triangle[i] == atOnce.Triangle[i]);
+    largest = std::max(largest, (inSteps.Barycentric[i] - atOnce.Barycentric[i]).norm());
+  }
+  MOBIUS_CHECK(largest < 1e-12);
+
+  SurfacePolisher moved;
+  MOBIUS_CHECK(moved.Start(source, triangles, target, triangles, corners, start.Triangle,
+    start.Barycentric, parameters));
+  MOBIUS_CHECK(moved.Iterate(20));
+  moved.MoveTo(start.Triangle, start.Barycentric);
+  Map back;
+  moved.CurrentMap(back.Triangle, back.Barycentric);
+  const SurfaceWalker walker{ target, triangles, corners };
+  double farthest = 0;
+  for (Index i = 0; i < source.rows(); ++i)
+  {
+    farthest = std::max(farthest, (walker.Point(back.Triangle[i], back.Barycentric[i]) -
+                                    walker.Point(start.Triangle[i], start.Barycentric[i]))
+                                    .norm());
+  }
+  std::cout << "polish in steps of 7: largest barycentric difference " << largest
+            << "; moved back to the start: " << farthest << "\n";
+  MOBIUS_CHECK(farthest < 1e-9);
+}
 }
 
 int main()
@@ -221,5 +285,6 @@ int main()
   TestSlidMap(false);
   TestSlidMap(true);
   TestStretchedTarget();
+  TestPolishInSteps();
   return MOBIUS_TEST_RESULT();
 }

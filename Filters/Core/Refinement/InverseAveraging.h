@@ -26,18 +26,19 @@ constexpr double kInverseReach = 3.0;
 /// both worse than 0.5 (docs/accuracy.md, "Both directions").
 constexpr double kInverseWeight = 0.5;
 
-/// How often both directions are polished before the last average: from the second round
-/// on, each direction's polish starts from its map averaged with the other's inverse, so
-/// the rigid prior of each side works on a map the other side has already moved. On FAUST_r
-/// training pairs (5,000 vertices) two rounds of the polish's 60 iterations scored 1.8% better
-/// than one (120 iterations in one round: 0.5%; three rounds: 2.1%, at half as much cost
-/// again; docs/accuracy.md, "Polishing again from the average").
-constexpr int kPolishRounds = 2;
+/// How many of the polish's iterations run between two meetings of the directions: the
+/// polishes of both maps stop, each map moves towards the other's inverse, and both go on
+/// from there with their momentum (RefineCorrespondence's PolishBoth), so that the rigid
+/// prior of each side works on a map the other side has already moved. On FAUST_r training
+/// pairs (5,000 vertices) meetings every 10 of the 60 iterations scored 1.4% better than two
+/// whole polishes of 60 with one meeting between them, at about the same cost (every 6:
+/// 1.6%, every 15: 0.7%; docs/accuracy.md, "Meeting while polishing").
+constexpr int kMeetingInterval = 10;
 
-/// Pairs with a surface of more vertices than this are polished once: on 20,000-vertex
-/// bodies the second round gained nothing (8 FAUST_r pairs subdivided once: 1.458 -> 1.452,
-/// better on 2) and cost 0.6 s, a quarter of the whole registration.
-constexpr Index kRepolishMaximumVertices = 10000;
+/// Pairs with a surface of more vertices than this are polished without meetings (and
+/// averaged once, at the end): on 20,000-vertex bodies the meetings gained little (8 FAUST_r
+/// pairs subdivided once: 1.458 -> 1.446) and cost 0.25 s, over the 3 s a pair may take.
+constexpr Index kMeetingMaximumVertices = 10000;
 
 /// Moves each source vertex's point on the target (`forward`, in place) by `weight` of the
 /// way towards the inverse of `reverse` (per target vertex, its point on the source), and

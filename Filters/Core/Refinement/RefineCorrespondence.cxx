@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 
 namespace mobius
@@ -184,13 +185,12 @@ SampleMap FinishKeptMap(const SpectralSurface& source, const SpectralSurface& ta
   return kept;
 }
 
-// The dense map moved on the surfaces (SurfacePolish); the error if the polish failed.
-std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
-  const SampleMap& kept, int numberOfThreads, const std::vector<std::pair<Index, Index>>& pinned,
-  DenseMap& dense)
+// The polish's parameters for a map from `source` to `target` whose kept sample map is
+// `kept`.
+SurfacePolishParameters PolishParametersFor(const SpectralSurface& source,
+  const SpectralSurface& target, const SampleMap& kept, int numberOfThreads,
+  const std::vector<std::pair<Index, Index>>& pinned)
 {
-  // On the scaled surfaces the spectral bases were computed on: the polish scales the
-  // source to the target's area itself, and the map is triangles and barycentrics.
   SurfacePolishParameters polish;
   polish.NumberOfThreads = numberOfThreads;
   // A mirror image (an orientation-reversing map: a reflection's, or a symmetry's) is
@@ -199,9 +199,20 @@ std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface&
   polish.Pinned = pinned;
   polish.SourceCurvatures = source.PolishCurvatures;
   polish.TargetCurvatures = target.PolishCurvatures;
+  return polish;
+}
+
+// The dense map moved on the surfaces (SurfacePolish); the error if the polish failed.
+std::string PolishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& kept, int numberOfThreads, const std::vector<std::pair<Index, Index>>& pinned,
+  DenseMap& dense)
+{
+  // On the scaled surfaces the spectral bases were computed on: the polish scales the
+  // source to the target's area itself, and the map is triangles and barycentrics.
   SurfacePolishInfo info;
   const bool polished = PolishSurfaceMap(source.Positions, source.Faces, target.Positions,
-    target.Faces, target.Corners, dense.Triangle, dense.Barycentric, polish, info);
+    target.Faces, target.Corners, dense.Triangle, dense.Barycentric,
+    PolishParametersFor(source, target, kept, numberOfThreads, pinned), info);
   return polished ? std::string() : info.Error;
 }
 
@@ -253,29 +264,6 @@ std::vector<std::pair<Index, Index>> Swapped(const std::vector<std::pair<Index, 
   return swapped;
 }
 
-// Both directions' maps polished again at once, each on its own thread; false if either
-// polish failed (its error kept).
-bool PolishBothAgain(const SpectralSurface& source, const SpectralSurface& target,
-  const SampleMap& forwardSamples, const SampleMap& reverseSamples,
-  const std::vector<std::pair<Index, Index>>& landmarks, int threads, DirectionMap& forward,
-  DirectionMap& reverse)
-{
-  const int each = std::max(1, threads / 2);
-  ParallelFor(2, threads, [&](int direction, int) {
-    if (direction == 0)
-    {
-      forward.PolishError =
-        PolishDenseMap(source, target, forwardSamples, each, landmarks, forward.Dense);
-    }
-    else
-    {
-      reverse.PolishError = PolishDenseMap(
-        target, source, reverseSamples, each, Swapped(landmarks), reverse.Dense);
-    }
-  });
-  return forward.PolishError.empty() && reverse.PolishError.empty();
-}
-
 // `map` (source onto target) moved towards the inverse of `other` (target onto source).
 DenseMap TowardsInverse(const SpectralSurface& source, const SpectralSurface& target,
   const DenseMap& map, const DenseMap& other,
@@ -288,11 +276,57 @@ DenseMap TowardsInverse(const SpectralSurface& source, const SpectralSurface& ta
   return averaged;
 }
 
+// Both directions' maps polished at once, each on its own thread. Every kMeetingInterval
+// iterations (if `meet`) they meet: each moves towards the other's inverse and the polishes
+// go on from there, their momentum kept. A direction whose polish fails keeps its error,
+// the other goes on alone.
+void PolishBoth(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& forwardSamples, const SampleMap& reverseSamples,
+  const std::vector<std::pair<Index, Index>>& landmarks, int threads, bool meet,
+  DirectionMap& forward, DirectionMap& reverse)
+{
+  const int each = std::max(1, threads / 2);
+  const std::array<std::vector<std::pair<Index, Index>>, 2> pinned{ landmarks,
+    Swapped(landmarks) };
+  const std::array<const SpectralSurface*, 2> from{ &source, &target }, onto{ &target, &source };
+  const std::array<DirectionMap*, 2> maps{ &forward, &reverse };
+  const std::array<SurfacePolishParameters, 2> parameters{
+    PolishParametersFor(source, target, forwardSamples, each, pinned[0]),
+    PolishParametersFor(target, source, reverseSamples, each, pinned[1]) };
+  std::array<SurfacePolisher, 2> polishers;
+  std::array<bool, 2> ok{ false, false };
+  ParallelFor(2, threads, [&](int d, int) {
+    ok[d] = polishers[d].Start(from[d]->Positions, from[d]->Faces, onto[d]->Positions,
+      onto[d]->Faces, onto[d]->Corners, maps[d]->Dense.Triangle, maps[d]->Dense.Barycentric,
+      parameters[d]);
+  });
+  const int iterations = parameters[0].Iterations;
+  for (int done = kMeetingInterval; meet && ok[0] && ok[1] && done < iterations;
+       done += kMeetingInterval)
+  {
+    ParallelFor(2, threads, [&](int d, int) {
+      ok[d] = polishers[d].Iterate(kMeetingInterval);
+      polishers[d].CurrentMap(maps[d]->Dense.Triangle, maps[d]->Dense.Barycentric);
+    });
+    ParallelFor(2, threads, [&](int d, int) {
+      const DenseMap towards = TowardsInverse(
+        *from[d], *onto[d], maps[d]->Dense, maps[1 - d]->Dense, pinned[d], each);
+      polishers[d].MoveTo(towards.Triangle, towards.Barycentric);
+    });
+  }
+  ParallelFor(2, threads, [&](int d, int) {
+    if (ok[d] && polishers[d].Iterate(iterations))
+    {
+      polishers[d].CurrentMap(maps[d]->Dense.Triangle, maps[d]->Dense.Barycentric);
+    }
+    maps[d]->PolishError = polishers[d].Info().Error;
+  });
+}
+
 // The kept map extended to every vertex and polished as the options ask. In both
-// directions, each is extended and polished on its own thread, and each map is averaged
-// with the inverse of the other (InverseAveraging), polished again from there
-// (kPolishRounds, on surfaces of up to kRepolishMaximumVertices), and the forward map
-// averaged once more.
+// directions, each is extended on its own thread, both are polished at once, meeting
+// between iterations (PolishBoth; on surfaces of up to kMeetingMaximumVertices), and the
+// forward map is averaged with the inverse of the other (InverseAveraging).
 void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<std::pair<Index, Index>>& landmarks, const ZoomOutParameters& parameters,
   const CorrespondenceRefinementOptions& options, RefinedCorrespondence& refined)
@@ -313,31 +347,21 @@ void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target
   ParallelFor(2, threads, [&](int direction, int) {
     if (direction == 0)
     {
-      forward = ExtendAndPolish(source, target, refined.Kept, parameters, landmarks, true, each);
+      forward = ExtendAndPolish(source, target, refined.Kept, parameters, landmarks, false, each);
     }
     else
     {
       reverse = ExtendAndPolish(
-        target, source, reverseSamples, parameters, Swapped(landmarks), true, each);
+        target, source, reverseSamples, parameters, Swapped(landmarks), false, each);
     }
   });
-  refined.ExtensionSeconds = forward.ExtensionSeconds;
-  bool polished = forward.PolishError.empty() && reverse.PolishError.empty();
-  const bool repolish = std::max(source.Positions.rows(), target.Positions.rows()) <=
-    kRepolishMaximumVertices;
-  const int rounds = repolish ? kPolishRounds : 1;
-  for (int round = 1; round < rounds && polished; ++round)
-  {
-    DenseMap averaged =
-      TowardsInverse(source, target, forward.Dense, reverse.Dense, landmarks, threads);
-    reverse.Dense =
-      TowardsInverse(target, source, reverse.Dense, forward.Dense, Swapped(landmarks), threads);
-    forward.Dense = std::move(averaged);
-    polished = PolishBothAgain(
-      source, target, refined.Kept, reverseSamples, landmarks, threads, forward, reverse);
-  }
+  refined.ExtensionSeconds = std::max(forward.ExtensionSeconds, reverse.ExtensionSeconds);
+  const bool meet =
+    std::max(source.Positions.rows(), target.Positions.rows()) <= kMeetingMaximumVertices;
+  PolishBoth(source, target, refined.Kept, reverseSamples, landmarks, threads, meet, forward,
+    reverse);
   refined.PolishError = forward.PolishError;
-  refined.Dense = polished
+  refined.Dense = forward.PolishError.empty() && reverse.PolishError.empty()
     ? TowardsInverse(source, target, forward.Dense, reverse.Dense, landmarks, threads)
     : std::move(forward.Dense);
 }

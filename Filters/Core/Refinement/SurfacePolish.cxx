@@ -244,203 +244,307 @@ Eigen::Vector3d CurvatureStep(const Points& targetPoints, const Triangles& targe
 }
 }
 
-bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangles,
-  const Points& targetPoints, const Triangles& targetTriangles,
-  const VertexLists& targetVertexTriangles, std::vector<Index>& triangle,
-  std::vector<Eigen::Vector3d>& barycentric, const SurfacePolishParameters& parameters,
-  SurfacePolishInfo& info)
+namespace
 {
-  const Index n = sourcePoints.rows();
-  info = SurfacePolishInfo();
-  const double sourceArea = TotalArea(sourcePoints, sourceTriangles);
-  const double targetArea = TotalArea(targetPoints, targetTriangles);
-  if (n == 0 || !(sourceArea > 0) || !(targetArea > 0))
-  {
-    info.Error = "a surface has no area";
-    return false;
-  }
-  // The source at the target's scale: an isometric copy is then rigid, not just similar.
-  Points x = sourcePoints * std::sqrt(targetArea / sourceArea);
-  if (parameters.ReverseOrientation)
-  {
-    // A map that reverses orientation (a mirror self-map) is a rotation of the mirrored
-    // source; ARAP's rotations could not follow it otherwise.
-    x.col(0) *= -1;
-  }
-  SparseMatrix stiffness;
-  CotangentStiffnessInfo stiffnessInfo;
-  if (!BuildCotangentStiffness(x, sourceTriangles, true, stiffness, stiffnessInfo))
-  {
-    info.Error = stiffnessInfo.Error;
-    return false;
-  }
-  const WeightedNeighbors neighbors = NeighborsOf(stiffness);
-  Vector area = LumpedMass(x, sourceTriangles);
-  area *= static_cast<double>(n) / area.sum();
-  double fit = parameters.Fit;
-  SparseMatrix system = PolishSystem(stiffness, area, fit, parameters);
-  SparseCholesky cholesky(SparseCholesky::Use::ManySolves);
-  const char* const factorError = "the polish's system could not be factored";
-  if (!cholesky.Analyze(system) || !cholesky.Factorize(system))
-  {
-    info.Error = factorError;
-    return false;
-  }
-
-  const SurfaceWalker target{ targetPoints, targetTriangles, targetVertexTriangles };
-  // Outward normals: mirroring the points turned the triangles' normals inwards.
-  Points sourceNormals = AreaWeightedVertexNormals(x, sourceTriangles);
-  if (parameters.ReverseOrientation)
-  {
-    sourceNormals *= -1;
-  }
-  const double targetEdge = MeanEdgeLength(targetPoints, targetTriangles);
-  const double reject = parameters.RejectDistance * targetEdge;
-  const double reject2 = reject * reject;
-  // Row-major with 3 fixed columns, like Points: the per-edge products stay fixed-size.
-  Points spectral(n, 3);
-  for (Index i = 0; i < n; ++i)
-  {
-    spectral.row(i) = target.Point(triangle[i], barycentric[i]).transpose();
-  }
-  Points y = spectral, lastSolved = spectral;
-  std::vector<Index> current = triangle;
-  std::vector<Eigen::Matrix3d> rotations(static_cast<size_t>(n), Eigen::Matrix3d::Identity());
-  std::vector<Eigen::Quaterniond> quaternions(static_cast<size_t>(n));
-  const WeightedEdges edges = WeightedEdgesOf(neighbors, x);
-  std::vector<char> trusted(static_cast<size_t>(n), 1);
-  const int threads = ResolveThreadCount(parameters.NumberOfThreads);
-  // The curvatures the closest points match: those given for both surfaces.
-  std::vector<CurvatureTerm> curvatureTerms;
+// The curvatures the closest points match: those given for both surfaces.
+std::vector<CurvatureTerm> CurvatureTermsOf(
+  const SurfacePolishParameters& parameters, Index n, Index targetSize, double targetArea)
+{
+  std::vector<CurvatureTerm> terms;
   for (size_t k = 0; k < parameters.CurvatureWeights.size(); ++k)
   {
     if (parameters.CurvatureWeights[k] > 0 && k < parameters.SourceCurvatures.size() &&
       k < parameters.TargetCurvatures.size() && parameters.SourceCurvatures[k].size() == n &&
-      parameters.TargetCurvatures[k].size() == targetPoints.rows())
+      parameters.TargetCurvatures[k].size() == targetSize)
     {
-      curvatureTerms.push_back({ &parameters.SourceCurvatures[k], &parameters.TargetCurvatures[k],
+      terms.push_back({ &parameters.SourceCurvatures[k], &parameters.TargetCurvatures[k],
         parameters.CurvatureWeights[k] * std::sqrt(targetArea), k });
     }
   }
+  return terms;
+}
 
-  // Halfway, the map's ARAP residuals set how far the rigid prior is trusted after.
-  const int measured = parameters.Iterations / 2;
-  std::vector<double> residuals;
-  for (int iteration = 0; iteration < parameters.Iterations; ++iteration)
+// The rotation of the first iteration, whose start may be any rotation: from an SVD.
+Eigen::Matrix3d FirstRotation(const Eigen::Matrix3d& covariance, Eigen::Quaterniond& q)
+{
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(
+    covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d u = svd.matrixU();
+  if ((u * svd.matrixV().transpose()).determinant() < 0)
   {
-    if (iteration == measured)
-    {
-      residuals.assign(static_cast<size_t>(n), 0.0);
-    }
-    else if (iteration > measured && info.FitGain > 1.0)
-    {
-      const double progress =
-        static_cast<double>(iteration - measured) / std::max(1, parameters.Iterations - 1 - measured);
-      ScheduleCurvatureWeights(parameters, progress, std::sqrt(targetArea), curvatureTerms);
-    }
-    Eigen::MatrixXd rhs(n, 3); // column-major, as the solver takes it
-    ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
-      for (Index i = begin; i < end; ++i)
-      {
-        // ARAP local step: the rotation taking the source's edge vectors around i closest
-        // to the current ones, i.e. maximizing tr(R^T A), A = sum_j w_ij y_ij x_ij^T.
-        Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-        for (Index k = neighbors.Offsets[i]; k < neighbors.Offsets[i + 1]; ++k)
-        {
-          covariance += (y.row(neighbors.Items[k]) - y.row(i)).transpose() * edges.Vectors[k].transpose();
-        }
-        Eigen::Matrix3d r;
-        if (iteration == 0)
-        {
-          const Eigen::JacobiSVD<Eigen::Matrix3d> svd(
-            covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
-          Eigen::Matrix3d u = svd.matrixU();
-          if ((u * svd.matrixV().transpose()).determinant() < 0)
-          {
-            u.col(2) *= -1;
-          }
-          r = u * svd.matrixV().transpose();
-          quaternions[i] = Eigen::Quaterniond(r);
-        }
-        else
-        {
-          r = NearestRotation(covariance, rotations[i], quaternions[i]);
-        }
-        rotations[i] = r;
-        if (iteration == measured)
-        {
-          residuals[i] = RelativeResidual(neighbors, edges, y, i, r, covariance);
-        }
+    u.col(2) *= -1;
+  }
+  const Eigen::Matrix3d r = u * svd.matrixV().transpose();
+  q = Eigen::Quaterniond(r);
+  return r;
+}
+}
 
-        // The closest target point, if it can be trusted; else y_i itself.
-        const Eigen::Vector3d q = y.row(i).transpose();
-        Eigen::Vector3d weights;
-        const double d2 = target.Walk(q, current[i], weights, true);
-        const Index t = current[i];
-        const Eigen::Vector3d a = targetPoints.row(targetTriangles(t, 0)).transpose(),
-                              b = targetPoints.row(targetTriangles(t, 1)).transpose(),
-                              c = targetPoints.row(targetTriangles(t, 2)).transpose();
-        const Eigen::Vector3d faceNormal = (b - a).cross(c - a).normalized();
-        const double facing = faceNormal.dot(r * sourceNormals.row(i).transpose());
-        trusted[i] = d2 <= reject2 && facing >= parameters.MinimumNormalCosine ? 1 : 0;
-        Eigen::Vector3d closest = trusted[i] ? target.Point(t, weights) : q;
-        if (trusted[i] && !curvatureTerms.empty())
-        {
-          // Into the product of space and curvature: a step in the triangle's plane, at
-          // most an edge long, so within a second-order distance of the surface.
-          closest +=
-            CurvatureStep(targetPoints, targetTriangles, curvatureTerms, i, t, weights, targetEdge);
-        }
-        rhs.row(i) = area[i] *
-          (fit * closest + parameters.Anchor * spectral.row(i).transpose()).transpose();
-      }
-    });
-    for (const auto& pin : parameters.Pinned)
-    {
-      rhs.row(pin.first) += parameters.PinWeight * fit * area[pin.first] *
-        targetPoints.row(pin.second);
-    }
-    // ARAP global step's right-hand side: sum_j w_ij (R_i + R_j) / 2 (x_i - x_j)
-    // = -(R_i sum_j e_ij + sum_j R_j e_ij) / 2 with e_ij = w_ij (x_j - x_i).
-    ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
-      for (Index i = begin; i < end; ++i)
-      {
-        Eigen::Vector3d sum = rotations[i] * edges.Sums[i];
-        for (Index k = neighbors.Offsets[i]; k < neighbors.Offsets[i + 1]; ++k)
-        {
-          sum.noalias() += rotations[neighbors.Items[k]] * edges.Vectors[k];
-        }
-        rhs.row(i) -= 0.5 * sum.transpose();
-      }
-    });
-    const Points solved = cholesky.Solve(rhs);
-    y = iteration > 0 ? Points(solved + parameters.Momentum * (solved - lastSolved)) : solved;
-    lastSolved = solved;
-    if (iteration == measured)
-    {
-      info.FitGain = FitGain(residuals, area, parameters, info.RigidResidual);
-      if (info.FitGain > 1.0)
-      {
-        fit = parameters.Fit * info.FitGain;
-        system = PolishSystem(stiffness, area, fit, parameters);
-        if (!cholesky.Factorize(system))
-        {
-          info.Error = factorError;
-          return false;
-        }
-      }
-    }
+// Everything the polish keeps from one iteration to the next.
+struct SurfacePolisher::State
+{
+  State(const Points& targetPoints, const Triangles& targetTriangles,
+    const VertexLists& targetVertexTriangles, const SurfacePolishParameters& parameters)
+    : Parameters(parameters)
+    , Target{ targetPoints, targetTriangles, targetVertexTriangles }
+    , Cholesky(SparseCholesky::Use::ManySolves)
+  {
   }
 
-  // The last solution itself, not its extrapolation, onto the target.
-  std::vector<char> kept(static_cast<size_t>(n), 0);
-  ParallelForChunks<Index>(n, 512, threads, [&](Index begin, Index end) {
+  const SurfacePolishParameters& Parameters;
+  const SurfaceWalker Target;
+  Index N = 0;
+  double TargetArea = 0;
+  double TargetEdge = 0;
+  double Reject2 = 0; ///< squared distance beyond which a closest point is not trusted
+  Points X;           ///< the source at the target's scale (mirrored for ReverseOrientation)
+  Points SourceNormals;
+  SparseMatrix Stiffness;
+  WeightedNeighbors Neighbors;
+  WeightedEdges Edges;
+  Vector Area; ///< vertex area over mean vertex area
+  double Fit = 0;
+  SparseCholesky Cholesky;
+  std::vector<CurvatureTerm> CurvatureTerms;
+  std::vector<Index> SpectralTriangle; ///< the map at the start
+  std::vector<Eigen::Vector3d> SpectralBarycentric;
+  Points Spectral; ///< its points, which the anchor holds
+  Points Y;        ///< the current iterate (the last solution pushed on by momentum)
+  Points LastSolved;
+  std::vector<Index> Current; ///< each vertex's last closest triangle
+  std::vector<Eigen::Matrix3d> Rotations;
+  std::vector<Eigen::Quaterniond> Quaternions;
+  std::vector<char> Trusted;
+  std::vector<double> Residuals;
+  int Threads = 1;
+  int Iteration = 0;
+  SurfacePolishInfo Info;
+
+  void LocalStep(int iteration, Eigen::MatrixXd& rhs);
+  void AddRotatedEdges(Eigen::MatrixXd& rhs) const;
+  bool MeasureRigidity();
+};
+
+// Per vertex: the ARAP rotation, and the right-hand side's pull towards the closest target
+// point (moved to match the curvatures, if it can be trusted; else towards y_i itself) and
+// the spectral point.
+void SurfacePolisher::State::LocalStep(int iteration, Eigen::MatrixXd& rhs)
+{
+  const Points& targetPoints = this->Target.Positions;
+  const Triangles& targetTriangles = this->Target.Faces;
+  const bool measure = iteration == this->Parameters.Iterations / 2;
+  ParallelForChunks<Index>(this->N, 512, this->Threads, [&](Index begin, Index end) {
     for (Index i = begin; i < end; ++i)
     {
-      Index t = current[i];
+      // ARAP local step: the rotation taking the source's edge vectors around i closest
+      // to the current ones, i.e. maximizing tr(R^T A), A = sum_j w_ij y_ij x_ij^T.
+      Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+      for (Index k = this->Neighbors.Offsets[i]; k < this->Neighbors.Offsets[i + 1]; ++k)
+      {
+        covariance += (this->Y.row(this->Neighbors.Items[k]) - this->Y.row(i)).transpose() *
+          this->Edges.Vectors[k].transpose();
+      }
+      const Eigen::Matrix3d r = iteration == 0
+        ? FirstRotation(covariance, this->Quaternions[i])
+        : NearestRotation(covariance, this->Rotations[i], this->Quaternions[i]);
+      this->Rotations[i] = r;
+      if (measure)
+      {
+        this->Residuals[i] = RelativeResidual(this->Neighbors, this->Edges, this->Y, i, r, covariance);
+      }
+
+      const Eigen::Vector3d q = this->Y.row(i).transpose();
       Eigen::Vector3d weights;
-      if (lastSolved.row(i).allFinite() &&
-        target.Walk(lastSolved.row(i).transpose(), t, weights) <= reject2)
+      const double d2 = this->Target.Walk(q, this->Current[i], weights, true);
+      const Index t = this->Current[i];
+      const Eigen::Vector3d a = targetPoints.row(targetTriangles(t, 0)).transpose(),
+                            b = targetPoints.row(targetTriangles(t, 1)).transpose(),
+                            c = targetPoints.row(targetTriangles(t, 2)).transpose();
+      const Eigen::Vector3d faceNormal = (b - a).cross(c - a).normalized();
+      const double facing = faceNormal.dot(r * this->SourceNormals.row(i).transpose());
+      this->Trusted[i] =
+        d2 <= this->Reject2 && facing >= this->Parameters.MinimumNormalCosine ? 1 : 0;
+      Eigen::Vector3d closest = this->Trusted[i] ? this->Target.Point(t, weights) : q;
+      if (this->Trusted[i] && !this->CurvatureTerms.empty())
+      {
+        // Into the product of space and curvature: a step in the triangle's plane, at
+        // most an edge long, so within a second-order distance of the surface.
+        closest += CurvatureStep(
+          targetPoints, targetTriangles, this->CurvatureTerms, i, t, weights, this->TargetEdge);
+      }
+      rhs.row(i) = this->Area[i] *
+        (this->Fit * closest + this->Parameters.Anchor * this->Spectral.row(i).transpose())
+          .transpose();
+    }
+  });
+  for (const auto& pin : this->Parameters.Pinned)
+  {
+    rhs.row(pin.first) += this->Parameters.PinWeight * this->Fit * this->Area[pin.first] *
+      targetPoints.row(pin.second);
+  }
+}
+
+// ARAP global step's right-hand side: sum_j w_ij (R_i + R_j) / 2 (x_i - x_j)
+// = -(R_i sum_j e_ij + sum_j R_j e_ij) / 2 with e_ij = w_ij (x_j - x_i).
+void SurfacePolisher::State::AddRotatedEdges(Eigen::MatrixXd& rhs) const
+{
+  ParallelForChunks<Index>(this->N, 512, this->Threads, [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i)
+    {
+      Eigen::Vector3d sum = this->Rotations[i] * this->Edges.Sums[i];
+      for (Index k = this->Neighbors.Offsets[i]; k < this->Neighbors.Offsets[i + 1]; ++k)
+      {
+        sum.noalias() += this->Rotations[this->Neighbors.Items[k]] * this->Edges.Vectors[k];
+      }
+      rhs.row(i) -= 0.5 * sum.transpose();
+    }
+  });
+}
+
+// Halfway: the Fit gain for the rest from the map's ARAP residuals, the system refactored
+// if it gained. False if it could not be.
+bool SurfacePolisher::State::MeasureRigidity()
+{
+  this->Info.FitGain = FitGain(this->Residuals, this->Area, this->Parameters, this->Info.RigidResidual);
+  if (!(this->Info.FitGain > 1.0))
+  {
+    return true;
+  }
+  this->Fit = this->Parameters.Fit * this->Info.FitGain;
+  return this->Cholesky.Factorize(
+    PolishSystem(this->Stiffness, this->Area, this->Fit, this->Parameters));
+}
+
+namespace
+{
+const char* const kFactorError = "the polish's system could not be factored";
+}
+
+SurfacePolisher::SurfacePolisher() = default;
+SurfacePolisher::~SurfacePolisher() = default;
+
+bool SurfacePolisher::Start(const Points& sourcePoints, const Triangles& sourceTriangles,
+  const Points& targetPoints, const Triangles& targetTriangles,
+  const VertexLists& targetVertexTriangles, const std::vector<Index>& triangle,
+  const std::vector<Eigen::Vector3d>& barycentric, const SurfacePolishParameters& parameters)
+{
+  this->Polish =
+    std::make_unique<State>(targetPoints, targetTriangles, targetVertexTriangles, parameters);
+  State& p = *this->Polish;
+  const Index n = p.N = sourcePoints.rows();
+  const double sourceArea = TotalArea(sourcePoints, sourceTriangles);
+  p.TargetArea = TotalArea(targetPoints, targetTriangles);
+  if (n == 0 || !(sourceArea > 0) || !(p.TargetArea > 0))
+  {
+    p.Info.Error = "a surface has no area";
+    return false;
+  }
+  // The source at the target's scale: an isometric copy is then rigid, not just similar.
+  p.X = sourcePoints * std::sqrt(p.TargetArea / sourceArea);
+  if (parameters.ReverseOrientation)
+  {
+    // A map that reverses orientation (a mirror self-map) is a rotation of the mirrored
+    // source; ARAP's rotations could not follow it otherwise.
+    p.X.col(0) *= -1;
+  }
+  CotangentStiffnessInfo stiffnessInfo;
+  if (!BuildCotangentStiffness(p.X, sourceTriangles, true, p.Stiffness, stiffnessInfo))
+  {
+    p.Info.Error = stiffnessInfo.Error;
+    return false;
+  }
+  p.Neighbors = NeighborsOf(p.Stiffness);
+  p.Area = LumpedMass(p.X, sourceTriangles);
+  p.Area *= static_cast<double>(n) / p.Area.sum();
+  p.Fit = parameters.Fit;
+  const SparseMatrix system = PolishSystem(p.Stiffness, p.Area, p.Fit, parameters);
+  if (!p.Cholesky.Analyze(system) || !p.Cholesky.Factorize(system))
+  {
+    p.Info.Error = kFactorError;
+    return false;
+  }
+  // Outward normals: mirroring the points turned the triangles' normals inwards.
+  p.SourceNormals = AreaWeightedVertexNormals(p.X, sourceTriangles);
+  if (parameters.ReverseOrientation)
+  {
+    p.SourceNormals *= -1;
+  }
+  p.TargetEdge = MeanEdgeLength(targetPoints, targetTriangles);
+  p.Reject2 = std::pow(parameters.RejectDistance * p.TargetEdge, 2);
+  // Row-major with 3 fixed columns, like Points: the per-edge products stay fixed-size.
+  p.Spectral.resize(n, 3);
+  for (Index i = 0; i < n; ++i)
+  {
+    p.Spectral.row(i) = p.Target.Point(triangle[i], barycentric[i]).transpose();
+  }
+  p.SpectralTriangle = triangle;
+  p.SpectralBarycentric = barycentric;
+  p.Y = p.LastSolved = p.Spectral;
+  p.Current = triangle;
+  p.Rotations.assign(static_cast<size_t>(n), Eigen::Matrix3d::Identity());
+  p.Quaternions.resize(static_cast<size_t>(n));
+  p.Edges = WeightedEdgesOf(p.Neighbors, p.X);
+  p.Trusted.assign(static_cast<size_t>(n), 1);
+  p.Residuals.assign(static_cast<size_t>(n), 0.0);
+  p.Threads = ResolveThreadCount(parameters.NumberOfThreads);
+  p.CurvatureTerms = CurvatureTermsOf(parameters, n, targetPoints.rows(), p.TargetArea);
+  return true;
+}
+
+bool SurfacePolisher::Iterate(int count)
+{
+  State& p = *this->Polish;
+  if (!p.Info.Error.empty())
+  {
+    return false;
+  }
+  // Halfway, the map's ARAP residuals set how far the rigid prior is trusted after.
+  const int measured = p.Parameters.Iterations / 2;
+  const int last = std::min(p.Parameters.Iterations, p.Iteration + std::max(0, count));
+  for (; p.Iteration < last; ++p.Iteration)
+  {
+    const int iteration = p.Iteration;
+    if (iteration > measured && p.Info.FitGain > 1.0)
+    {
+      const double progress = static_cast<double>(iteration - measured) /
+        std::max(1, p.Parameters.Iterations - 1 - measured);
+      ScheduleCurvatureWeights(p.Parameters, progress, std::sqrt(p.TargetArea), p.CurvatureTerms);
+    }
+    Eigen::MatrixXd rhs(p.N, 3); // column-major, as the solver takes it
+    p.LocalStep(iteration, rhs);
+    p.AddRotatedEdges(rhs);
+    const Points solved = p.Cholesky.Solve(rhs);
+    p.Y = iteration > 0 ? Points(solved + p.Parameters.Momentum * (solved - p.LastSolved)) : solved;
+    p.LastSolved = solved;
+    if (iteration == measured && !p.MeasureRigidity())
+    {
+      p.Info.Error = kFactorError;
+      return false;
+    }
+  }
+  return true;
+}
+
+int SurfacePolisher::Iterations() const
+{
+  return this->Polish ? this->Polish->Iteration : 0;
+}
+
+void SurfacePolisher::CurrentMap(
+  std::vector<Index>& triangle, std::vector<Eigen::Vector3d>& barycentric)
+{
+  State& p = *this->Polish;
+  triangle.resize(static_cast<size_t>(p.N));
+  barycentric.resize(static_cast<size_t>(p.N));
+  std::vector<char> kept(static_cast<size_t>(p.N), 0);
+  // The last solution itself, not its extrapolation, onto the target.
+  ParallelForChunks<Index>(p.N, 512, p.Threads, [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i)
+    {
+      Index t = p.Current[i];
+      Eigen::Vector3d weights;
+      if (p.LastSolved.row(i).allFinite() &&
+        p.Target.Walk(p.LastSolved.row(i).transpose(), t, weights) <= p.Reject2)
       {
         triangle[i] = t;
         barycentric[i] = weights;
@@ -448,19 +552,57 @@ bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangl
       else
       {
         kept[i] = 1; // far from the target: its spectral point stays
+        triangle[i] = p.SpectralTriangle[i];
+        barycentric[i] = p.SpectralBarycentric[i];
       }
     }
   });
   // A landmark ends on its target vertex itself, a corner of a triangle around it.
-  for (const auto& pin : parameters.Pinned)
+  for (const auto& pin : p.Parameters.Pinned)
   {
-    PlaceAtVertex(targetTriangles, targetVertexTriangles, pin.second, triangle[pin.first],
+    PlaceAtVertex(p.Target.Faces, p.Target.VertexFaces, pin.second, triangle[pin.first],
       barycentric[pin.first]);
   }
-  const Index rejected = std::count(trusted.begin(), trusted.end(), 0);
-  const Index keptSpectral = std::count(kept.begin(), kept.end(), 1);
-  info.Rejected = rejected;
-  info.KeptSpectral = keptSpectral;
-  return true;
+  p.Info.Rejected = std::count(p.Trusted.begin(), p.Trusted.end(), 0);
+  p.Info.KeptSpectral = std::count(kept.begin(), kept.end(), 1);
+}
+
+void SurfacePolisher::MoveTo(
+  const std::vector<Index>& triangle, const std::vector<Eigen::Vector3d>& barycentric)
+{
+  State& p = *this->Polish;
+  ParallelForChunks<Index>(p.N, 512, p.Threads, [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i)
+    {
+      const Eigen::Vector3d point = p.Target.Point(triangle[i], barycentric[i]);
+      // The iterate is the last solution plus momentum: both move, the step stays.
+      p.Y.row(i) += point.transpose() - p.LastSolved.row(i);
+      p.LastSolved.row(i) = point.transpose();
+      p.Current[i] = triangle[i];
+    }
+  });
+}
+
+const SurfacePolishInfo& SurfacePolisher::Info() const
+{
+  return this->Polish->Info;
+}
+
+bool PolishSurfaceMap(const Points& sourcePoints, const Triangles& sourceTriangles,
+  const Points& targetPoints, const Triangles& targetTriangles,
+  const VertexLists& targetVertexTriangles, std::vector<Index>& triangle,
+  std::vector<Eigen::Vector3d>& barycentric, const SurfacePolishParameters& parameters,
+  SurfacePolishInfo& info)
+{
+  SurfacePolisher polisher;
+  const bool polished = polisher.Start(sourcePoints, sourceTriangles, targetPoints,
+                          targetTriangles, targetVertexTriangles, triangle, barycentric, parameters) &&
+    polisher.Iterate(parameters.Iterations);
+  if (polished)
+  {
+    polisher.CurrentMap(triangle, barycentric);
+  }
+  info = polisher.Info();
+  return polished;
 }
 }

@@ -59,6 +59,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -142,6 +143,45 @@ struct SurfacePolishInfo
   double RigidResidual = 0; ///< the mean relative ARAP residual measured halfway
   double FitGain = 1;       ///< the Fit gain it gave the second half
   std::string Error;
+};
+
+/// The polish a few iterations at a time, so that two polishes (a map and the map the other
+/// way) can meet between iterations and move towards each other (InverseAveraging). The
+/// surfaces and parameters given to Start are referenced, not copied: they must outlive it.
+class SurfacePolisher
+{
+public:
+  SurfacePolisher();
+  ~SurfacePolisher();
+  SurfacePolisher(const SurfacePolisher&) = delete;
+  SurfacePolisher& operator=(const SurfacePolisher&) = delete;
+
+  /// Sets up the polish of the map given as a target triangle and barycentric coordinates
+  /// per source vertex (as PolishSurfaceMap takes it). False with Info().Error set if the
+  /// source's Laplacian cannot be built or factored.
+  bool Start(const Points& sourcePoints, const Triangles& sourceTriangles,
+    const Points& targetPoints, const Triangles& targetTriangles,
+    const VertexLists& targetVertexTriangles, const std::vector<Index>& triangle,
+    const std::vector<Eigen::Vector3d>& barycentric, const SurfacePolishParameters& parameters);
+  /// Runs up to `count` more of the parameters' Iterations. False with Info().Error set if
+  /// the system could not be factored again (the map is then unusable).
+  bool Iterate(int count);
+  /// The iterations run so far.
+  int Iterations() const;
+  /// The current solution on the target (closest points, found by walking from the last
+  /// triangles); a vertex far from the target keeps its spectral point, a landmark sits on
+  /// its target vertex.
+  void CurrentMap(std::vector<Index>& triangle, std::vector<Eigen::Vector3d>& barycentric);
+  /// Moves the current solution to the points of the map given, keeping each vertex's
+  /// momentum (its last step).
+  void MoveTo(const std::vector<Index>& triangle, const std::vector<Eigen::Vector3d>& barycentric);
+  /// Rejected and kept-spectral counts (as of the last iteration and CurrentMap), the
+  /// rigidity measured halfway, or the error.
+  const SurfacePolishInfo& Info() const;
+
+private:
+  struct State;
+  std::unique_ptr<State> Polish;
 };
 
 /// Polishes the map given as a target triangle and barycentric coordinates per source
