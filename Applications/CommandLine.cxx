@@ -309,9 +309,19 @@ const std::vector<Option>& Options()
         &PipelineOptions::FlowTolerance),
       PipelineFlag("--no-center-flow", "plain CMCF: no Moebius centering between flow steps",
         &PipelineOptions::CenterBetweenSteps, false),
-      PipelineFlag("--fill-holes", "close holes instead of rejecting open meshes",
+      PipelineFlag("--no-repair",
+        "strict: refuse a mesh that is not a closed, connected,\n"
+        "manifold, oriented genus-0 surface instead of repairing it\n"
+        "into a genus-0 proxy (the default: duplicate triangles\n"
+        "removed, non-manifold vertices split, triangles oriented,\n"
+        "small loose parts dropped, holes filled, handles cut)",
+        &PipelineOptions::Repair, false),
+      PipelineFlag("--fill-holes", "with --no-repair: close holes instead of refusing open meshes",
         &PipelineOptions::FillHoles, true),
-      PipelineFlag("--keep-largest-component", "map only the largest connected component",
+      PipelineFlag("--keep-largest-component",
+        "map only the largest connected component (without it a\n"
+        "loose part of a quarter of the largest one's area or more\n"
+        "is refused; smaller ones are dropped unless --no-repair)",
         &PipelineOptions::KeepLargestComponent, true),
       PipelineFlag("--allow-poor-maps",
         "write the result even when a conformal map is degenerate\n"

@@ -185,10 +185,38 @@ std::string StageTimes(const PipelineResult& result)
   return json.str();
 }
 
+// What the repair did to a mesh (vtkSphericalConformalMap's field data): the warning's
+// phrases and the figures behind them.
+std::string Repairs(vtkPolyData* map)
+{
+  std::ostringstream out;
+  out << "{\"done\": [";
+  auto phrases = vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("MeshRepairs"));
+  for (vtkIdType k = 0; phrases && k < phrases->GetNumberOfValues(); ++k)
+  {
+    out << (k ? ", " : "") << Quoted(phrases->GetValue(k));
+  }
+  out << "], \"removed_triangles\": " << Number(FieldValue(map, "RemovedTriangles"))
+      << ", \"split_vertices\": " << Number(FieldValue(map, "SplitNonManifoldVertices"))
+      << ", \"reversed_triangles\": " << Number(FieldValue(map, "ReversedTriangles"))
+      << ", \"dropped_components\": " << Number(FieldValue(map, "DroppedComponents"))
+      << ", \"dropped_area_share\": " << Number(FieldValue(map, "DroppedComponentAreaShare"))
+      << ", \"filled_holes\": " << Number(FieldValue(map, "FilledHoles"))
+      << ", \"filled_area_share\": " << Number(FieldValue(map, "FilledAreaShare"))
+      << ", \"cut_handle_loop_lengths\": [";
+  vtkDataArray* loops = map->GetFieldData()->GetArray("CutHandleLoopLengths");
+  for (vtkIdType k = 0; loops && k < loops->GetNumberOfTuples(); ++k)
+  {
+    out << (k ? ", " : "") << Number(loops->GetComponent(k, 0));
+  }
+  out << "]}";
+  return out.str();
+}
+
 std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
 {
   std::ostringstream out;
-  out << "{\"points\": " << map->GetNumberOfPoints()
+  out << "{\"points\": " << map->GetNumberOfPoints() << ", \"repairs\": " << Repairs(map)
       << ", \"flow_iterations\": " << Number(FieldValue(map, "ConformalFlowIterations"))
       << ", \"flow_converged\": " << (FieldValue(map, "ConformalFlowConverged") == 1 ? "true" : "false")
       << ", \"flipped_triangles\": " << Number(FieldValue(map, "FlippedTriangles"))

@@ -384,15 +384,16 @@ int Run(int argc, char* argv[])
   }
   // The CSV, usually the smaller file, first: under a file size limit between the two sizes
   // a complete file is then taken back too (Testing/Applications/test_output_faults.py).
-  if (!outputs.WriteCsv(result.Correspondence, error) ||
-    !outputs.WriteMesh(result.Correspondence, error) ||
+  // The user's outputs on the meshes as given; the picture shows the maps of the proxies.
+  if (!outputs.WriteCsv(result.InputCorrespondence, error) ||
+    !outputs.WriteMesh(result.InputCorrespondence, error) ||
     !outputs.WritePicture(result.Aligned, result.TargetCentered, result.Correspondence, error) || !outputs.Commit(error))
   {
     return Fail(error);
   }
 
   const double demoError =
-    commandLine.Demo ? DemoMeanError(result.Correspondence, target) : std::nan("");
+    commandLine.Demo ? DemoMeanError(result.InputCorrespondence, target) : std::nan("");
   CollectVTKMessages(warnings);
   warnings.insert(warnings.end(), result.Warnings.begin(), result.Warnings.end());
   if (verbose)
@@ -405,7 +406,7 @@ int Run(int argc, char* argv[])
   }
   else if (verbose)
   {
-    std::cout << "Mapped " << result.Correspondence->GetNumberOfPoints() << " vertices of "
+    std::cout << "Mapped " << result.InputCorrespondence->GetNumberOfPoints() << " vertices of "
               << sourceName << " onto " << targetName << ": "
               << (FieldValue(result.Aligned, "Determinant") < 0 ? "reflection" : "rotation")
               << " by " << RotationAngleDegrees(result.Aligned) << " degrees, registration error "

@@ -282,7 +282,7 @@ void RunPair(
     PipelineResult result;
     if (!ReadMesh(x.MeshPath, source, error) || !ReadMesh(y.MeshPath, target, error) ||
       !RunRegistration(source, target, x.MeshPath, y.MeshPath, options.Pipeline, result, error) ||
-      !ImagesFromPipeline(result.Correspondence, x, y, images, error))
+      !ImagesFromPipeline(result.InputCorrespondence, x, y, images, error))
     {
       score.Failure = error;
       return;

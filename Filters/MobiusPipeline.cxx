@@ -1,6 +1,7 @@
 #include "MobiusPipeline.h"
 
 #include "MobiusFilterMessages.h"
+#include "MobiusInputRows.h"
 #include "MobiusSphericalMapData.h"
 #include "ParallelFor.h"
 #include "RegistrationParameters.h"
@@ -114,6 +115,7 @@ bool MapToSphere(vtkPolyData* mesh, const std::string& name, const std::string& 
   conformal->SetMaximumNumberOfIterations(options.FlowIterations);
   conformal->SetConvergenceTolerance(options.FlowTolerance);
   conformal->SetCenterBetweenSteps(options.CenterBetweenSteps);
+  conformal->SetRepair(options.Repair);
   conformal->SetFillHoles(options.FillHoles);
   conformal->SetKeepLargestComponent(options.KeepLargestComponent);
   if (!RunStage(conformal, stage, name, progress, result, map, error, abort))
@@ -171,6 +173,54 @@ void AddLandmarkResiduals(PipelineResult& result)
   }
   fields->RemoveArray("LandmarkResidual");
   fields->AddArray(residuals);
+}
+
+// Two landmarks on one point of a mapped surface (two vertices the repair merged, being
+// copies of one point) would pull it two ways, and one of them would silently lose: an
+// error naming both.
+bool CheckDistinctLandmarkPoints(const std::vector<vtkIdType>& points, bool source,
+  const mobius::RegistrationParameters& options, const std::string& name, std::string& error)
+{
+  std::unordered_map<vtkIdType, size_t> first;
+  for (size_t k = 0; k < points.size(); ++k)
+  {
+    const auto [at, inserted] = first.emplace(points[k], k);
+    if (!inserted)
+    {
+      auto vertex = [&](size_t l) {
+        const mobius::Landmark& landmark = options.Landmarks[l];
+        return std::to_string(source ? landmark.Source : landmark.Target) +
+          (landmark.Line > 0 ? " (line " + std::to_string(landmark.Line) + ")" : "");
+      };
+      error = name + ": landmarks " + std::to_string(at->second) + " and " + std::to_string(k) +
+        " name " + (source ? "source" : "target") + " vertices " + vertex(at->second) + " and " +
+        vertex(k) + ", which are one point of the surface (duplicates at one position, merged by "
+        "the repair): give only one of them";
+      return false;
+    }
+  }
+  return true;
+}
+
+// result.InputCorrespondence: the final map on the meshes as given.
+bool PutOnInputs(vtkPolyData* source, vtkPolyData* target,
+  const mobius::RegistrationParameters& options, PipelineResult& result, std::string& error)
+{
+  result.InputCorrespondence = result.Correspondence;
+  if (options.InputsAreCenteredMaps ||
+    (!mobius::vtk::MapWasRepaired(result.SourceMap) && !mobius::vtk::MapWasRepaired(result.TargetMap)))
+  {
+    return true;
+  }
+  std::string problem;
+  result.InputCorrespondence = mobius::vtk::CorrespondenceOnInputs(source, target, result.SourceMap,
+    result.TargetMap, result.Correspondence, options.OutputGeometry == 0, problem);
+  if (!result.InputCorrespondence)
+  {
+    error = "the map on the meshes as given: " + problem;
+    return false;
+  }
+  return true;
 }
 }
 
@@ -329,7 +379,9 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
   if (!FindLandmarkPoints(source, result.SourceCentered, true, options, sourceName,
         result.SourceLandmarks, error) ||
     !FindLandmarkPoints(target, result.TargetCentered, false, options, targetName,
-      result.TargetLandmarks, error))
+      result.TargetLandmarks, error) ||
+    !CheckDistinctLandmarkPoints(result.SourceLandmarks, true, options, sourceName, error) ||
+    !CheckDistinctLandmarkPoints(result.TargetLandmarks, false, options, targetName, error))
   {
     return false;
   }
@@ -366,6 +418,7 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
     if (succeeded)
     {
       AddLandmarkResiduals(result);
+      succeeded = PutOnInputs(source, target, options, result, error);
     }
     result.WallSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -35,6 +35,10 @@ struct PipelineResult
   vtkSmartPointer<vtkPolyData> Aligned;                        // source moved by vtkSO3Register
   vtkSmartPointer<vtkPolyData> MobiusCorrespondence; // vtkDenseCorrespondence output
   vtkSmartPointer<vtkPolyData> Correspondence; // the final map: refined, or the Möbius one
+  /// The final map on the meshes as given (MobiusInputRows.h): one row per source vertex in
+  /// its numbering, target triangles and vertices as given. The same object as
+  /// Correspondence when no repair changed either mesh.
+  vtkSmartPointer<vtkPolyData> InputCorrespondence;
   /// Per landmark, its source vertex and its target vertex as points of the maps (the
   /// user's vertex numbers found through the maps' `InputPointId`).
   std::vector<vtkIdType> SourceLandmarks, TargetLandmarks;

@@ -17,6 +17,7 @@ vtkStandardNewMacro(vtkCenteredSphericalMap);
 vtkCenteredSphericalMap::vtkCenteredSphericalMap()
 {
   const mobius::RegistrationParameters defaults;
+  this->Repair = defaults.Repair;
   this->FillHoles = defaults.FillHoles;
   this->KeepLargestComponent = defaults.KeepLargestComponent;
   this->AllowPoorMaps = defaults.AllowPoorMaps;
@@ -93,6 +94,7 @@ void vtkCenteredSphericalMap::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MeshName: " << this->MeshName << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "FillHoles: " << this->FillHoles << "\n";
   os << indent << "KeepLargestComponent: " << this->KeepLargestComponent << "\n";
   os << indent << "AllowPoorMaps: " << this->AllowPoorMaps << "\n";

@@ -34,7 +34,14 @@ public:
   void SetMeshName(const char* name);
   const char* GetMeshName() const { return this->MeshName.c_str(); }
 
-  /** Repair: close holes, keep the largest component (vtkSphericalConformalMap). */
+  /**
+   * The meshes' repair (vtkSphericalConformalMap): Repair (default on) builds a genus-0
+   * proxy of a mesh that is none; with it off, FillHoles and KeepLargestComponent repair
+   * on request.
+   */
+  vtkSetMacro(Repair, bool);
+  vtkGetMacro(Repair, bool);
+  vtkBooleanMacro(Repair, bool);
   vtkSetMacro(FillHoles, bool);
   vtkGetMacro(FillHoles, bool);
   vtkBooleanMacro(FillHoles, bool);
@@ -71,6 +78,7 @@ private:
   void operator=(const vtkCenteredSphericalMap&) = delete;
 
   std::string MeshName = "Mesh";
+  bool Repair;
   bool FillHoles;
   bool KeepLargestComponent;
   bool AllowPoorMaps;

@@ -123,6 +123,7 @@ vtkMobiusRegistration::vtkMobiusRegistration()
   this->SetNumberOfOutputPorts(4);
   const mobius::RegistrationParameters defaults;
   this->InputsAreCenteredMaps = defaults.InputsAreCenteredMaps;
+  this->Repair = defaults.Repair;
   this->FillHoles = defaults.FillHoles;
   this->KeepLargestComponent = defaults.KeepLargestComponent;
   this->AllowPoorMaps = defaults.AllowPoorMaps;
@@ -239,7 +240,7 @@ int vtkMobiusRegistration::ComputeOutput(
     vtkErrorMacro(<< error);
     return 0;
   }
-  output->ShallowCopy(result.Correspondence);
+  output->ShallowCopy(result.InputCorrespondence);
   vtkNew<vtkFieldData> fields;
   fields->ShallowCopy(result.Correspondence->GetFieldData());
   if (!options.InputsAreCenteredMaps) // else these are the inputs, which the caller has
@@ -282,6 +283,7 @@ void vtkMobiusRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SourceName: " << this->SourceName << "\n";
   os << indent << "TargetName: " << this->TargetName << "\n";
   os << indent << "InputsAreCenteredMaps: " << this->InputsAreCenteredMaps << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "FillHoles: " << this->FillHoles << "\n";
   os << indent << "KeepLargestComponent: " << this->KeepLargestComponent << "\n";
   os << indent << "AllowPoorMaps: " << this->AllowPoorMaps << "\n";

@@ -8,8 +8,9 @@
  * spectral refinement (vtkCorrespondenceRefinement, when Refine is on and both maps have
  * at least 2 x BasisSize points). The stage filters stay for those who want the steps.
  *
- * Inputs: port 0 `Source`, port 1 `Target`: closed genus-0 triangle meshes (see FillHoles,
- * KeepLargestComponent).
+ * Inputs: port 0 `Source`, port 1 `Target`: triangle meshes; one that is no closed genus-0
+ * surface is repaired into a genus-0 proxy (Repair), and the outputs still have one row per
+ * vertex of the mesh as given.
  *
  * Output: the correspondence, as the last stage gives it and mobius-register writes to
  * OUT.vtp: the source's connectivity (points on the target surface, or the source surface
@@ -94,7 +95,14 @@ public:
   vtkGetMacro(InputsAreCenteredMaps, bool);
   vtkBooleanMacro(InputsAreCenteredMaps, bool);
 
-  /** Repair: close holes, keep the largest component (vtkSphericalConformalMap). */
+  /**
+   * The meshes' repair (vtkSphericalConformalMap): Repair (default on) builds a genus-0
+   * proxy of a mesh that is none; with it off, FillHoles and KeepLargestComponent repair
+   * on request.
+   */
+  vtkSetMacro(Repair, bool);
+  vtkGetMacro(Repair, bool);
+  vtkBooleanMacro(Repair, bool);
   vtkSetMacro(FillHoles, bool);
   vtkGetMacro(FillHoles, bool);
   vtkBooleanMacro(FillHoles, bool);
@@ -219,6 +227,7 @@ protected:
   std::string SourceName = "Source";
   std::string TargetName = "Target";
   bool InputsAreCenteredMaps;
+  bool Repair;
   bool FillHoles;
   bool KeepLargestComponent;
   bool AllowPoorMaps;

@@ -21,7 +21,6 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
-#include "vtkTriangleFilter.h"
 
 #include <cmath>
 #include <sstream>
@@ -32,24 +31,6 @@ vtkStandardNewMacro(vtkSphericalConformalMap);
 
 namespace
 {
-bool NeedsTriangulation(vtkPolyData* input)
-{
-  if (input->GetNumberOfStrips() > 0 || input->GetNumberOfVerts() > 0 ||
-    input->GetNumberOfLines() > 0)
-  {
-    return true;
-  }
-  vtkCellArray* polys = input->GetPolys();
-  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
-  {
-    if (polys->GetCellSize(c) != 3)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 // Copies attribute tuples from `source` to `target` following `provenance`; rows created
 // by a repair get zeros.
 void CopyAttributes(vtkDataSetAttributes* source, vtkDataSetAttributes* target,
@@ -69,27 +50,27 @@ void CopyAttributes(vtkDataSetAttributes* source, vtkDataSetAttributes* target,
   }
 }
 
-// The input's triangles: polygons and strips split, vertices and lines dropped (with their
-// data, and a warning).
+// The input's triangles (TriangulatedSurface), with a warning for the vertex and line cells
+// left out.
 vtkSmartPointer<vtkPolyData> TriangleSurface(vtkSphericalConformalMap* filter, vtkPolyData* input)
 {
-  if (!NeedsTriangulation(input))
-  {
-    return input;
-  }
   if (input->GetNumberOfVerts() > 0 || input->GetNumberOfLines() > 0)
   {
     vtkWarningWithObjectMacro(filter, << "Ignoring " << input->GetNumberOfVerts() << " vertex and "
                                       << input->GetNumberOfLines() << " line cells of the input.");
   }
-  vtkNew<vtkPolyData> shallow;
-  shallow->ShallowCopy(input);
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(shallow);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  return triangulate->GetOutput();
+  return mobius::vtk::TriangulatedSurface(input);
+}
+
+// The repairs' phrases (mobius::MeshRepairLog::Describe), joined by "; ".
+std::string JoinedRepairs(const mobius::MeshRepairLog& log)
+{
+  std::string joined;
+  for (const std::string& phrase : log.Describe())
+  {
+    joined += (joined.empty() ? "" : "; ") + phrase;
+  }
+  return joined;
 }
 
 // The mesh the flow runs on, and what the output needs of its preparation.
@@ -114,20 +95,20 @@ std::string PrepareFlowMesh(
   {
     return error;
   }
-  flowMesh.ScaleExponent = mobius::ScaleToUnitOrder(points);
+  flowMesh.ScaleExponent = mobius::ScaleToUnitOrder(points, triangles);
   mobius::RepairedMesh& mesh = flowMesh.Mesh;
   mesh = mobius::RepairMesh(std::move(points), std::move(triangles),
-    { filter->GetFillHoles() != 0, filter->GetKeepLargestComponent() != 0 });
+    { filter->GetRepair() != 0, filter->GetFillHoles() != 0, filter->GetKeepLargestComponent() != 0 });
   if (!mesh.Problem.empty())
   {
     return mesh.Problem;
   }
-  if (mesh.Topology.UnusedPoints > 0 || mesh.Points.rows() != input->GetNumberOfPoints())
+  const std::string repairs = JoinedRepairs(mesh.Log);
+  if (!repairs.empty())
   {
-    vtkWarningWithObjectMacro(filter, << "The output has " << mesh.Points.rows()
-                                      << " points, the input " << input->GetNumberOfPoints()
-                                      << " (duplicates merged, zero-length edges collapsed, "
-                                         "unused points dropped, holes filled).");
+    vtkWarningWithObjectMacro(filter, << "Repaired the mesh (" << input->GetNumberOfPoints()
+                                      << " points in, " << mesh.Points.rows()
+                                      << " out): " << repairs << ".");
   }
   flowMesh.ReversedTriangles = mobius::FaceOutward(mesh.Points, mesh.Triangles);
   mobius::TriangleAreasAtScale(
@@ -168,6 +149,16 @@ void AddSurfaceArrays(const FlowMesh& flowMesh, vtkPolyData* output)
     inputPointIds->SetValue(i, static_cast<vtkIdType>(mesh.Provenance.PointSource[i]));
   }
   output->GetPointData()->AddArray(inputPointIds);
+  // The same for the triangles: the input's triangle (after polygons are split) each came
+  // from, -1 for one a repair created.
+  vtkNew<vtkIdTypeArray> inputCellIds;
+  inputCellIds->SetName(mobius::vtk::InputCellIdArrayName);
+  inputCellIds->SetNumberOfTuples(mesh.Triangles.rows());
+  for (Eigen::Index t = 0; t < mesh.Triangles.rows(); ++t)
+  {
+    inputCellIds->SetValue(t, static_cast<vtkIdType>(mesh.Provenance.TriangleSource[t]));
+  }
+  output->GetCellData()->AddArray(inputCellIds);
   auto surfaceAreas = NamedDoubleArray(mobius::vtk::SurfaceAreaArrayName, 1, areas.size());
   for (Eigen::Index t = 0; t < areas.size(); ++t)
   {
@@ -182,6 +173,42 @@ void AddStringValue(vtkFieldData* fieldData, const char* name, const std::string
   array->SetName(name);
   array->InsertNextValue(value);
   fieldData->AddArray(array);
+}
+
+// What the repair did: `MeshRepairs` (one phrase per repair, none for a mesh that needed
+// none) and the counts and sizes behind them.
+void AddRepairFieldData(const mobius::MeshRepairLog& log, vtkFieldData* fieldData)
+{
+  using mobius::vtk::SetFieldCount;
+  using mobius::vtk::SetFieldValue;
+  vtkNew<vtkStringArray> phrases;
+  phrases->SetName("MeshRepairs");
+  for (const std::string& phrase : log.Describe())
+  {
+    phrases->InsertNextValue(phrase);
+  }
+  fieldData->AddArray(phrases);
+  SetFieldCount(fieldData, "MergedDuplicatePoints", static_cast<vtkIdType>(log.MergedDuplicatePoints));
+  SetFieldCount(fieldData, "CollapsedEdges", static_cast<vtkIdType>(log.CollapsedEdges));
+  SetFieldCount(fieldData, "RemovedTriangles",
+    static_cast<vtkIdType>(log.RemovedRepeatedVertexTriangles + log.RemovedNonFiniteTriangles +
+      log.RemovedDuplicateTriangles));
+  SetFieldCount(fieldData, "SplitNonManifoldVertices", static_cast<vtkIdType>(log.SplitVertices));
+  SetFieldCount(fieldData, "ReversedTriangles", static_cast<vtkIdType>(log.ReversedTriangles));
+  SetFieldCount(fieldData, "OrientationCutEdges", static_cast<vtkIdType>(log.OrientationCutEdges));
+  SetFieldCount(fieldData, "DroppedComponents", static_cast<vtkIdType>(log.DroppedComponents));
+  SetFieldValue(fieldData, "DroppedComponentAreaShare",
+    log.InputArea > 0 ? log.DroppedComponentArea / log.InputArea : 0.0);
+  mobius::vtk::SetFieldInteger(fieldData, "FilledHoles", static_cast<int>(log.FilledHoles));
+  SetFieldCount(fieldData, "FilledBoundaryEdges", static_cast<vtkIdType>(log.FilledBoundaryEdges));
+  SetFieldValue(fieldData, "FilledAreaShare", log.ProxyArea > 0 ? log.FilledArea / log.ProxyArea : 0.0);
+  vtkNew<vtkDoubleArray> loops;
+  loops->SetName("CutHandleLoopLengths"); // over sqrt(proxy area)
+  for (double length : log.HandleLoopLengths)
+  {
+    loops->InsertNextValue(log.ProxyArea > 0 ? length / std::sqrt(log.ProxyArea) : 0.0);
+  }
+  fieldData->AddArray(loops);
 }
 
 // The flow's figures, the map's distortion, the repairs and the verdict, as field data.
@@ -210,9 +237,7 @@ void AddMapFieldData(const mobius::ConformalMapResult& result, const FlowMesh& f
   mobius::vtk::SetFieldValues(fieldData, "AreaDistortionRange", areaRange, 2);
   SetFieldInteger(fieldData, "IntrinsicDelaunayUsed", result.IntrinsicDelaunayUsed ? 1 : 0);
   SetFieldCount(fieldData, "IntrinsicDelaunayFlips", static_cast<vtkIdType>(result.IntrinsicFlips));
-  SetFieldCount(fieldData, "MergedDuplicatePoints", static_cast<vtkIdType>(mesh.MergedDuplicatePoints));
-  SetFieldCount(fieldData, "CollapsedEdges", static_cast<vtkIdType>(mesh.CollapsedEdges));
-  SetFieldInteger(fieldData, "FilledHoles", static_cast<int>(mesh.FilledHoles));
+  AddRepairFieldData(mesh.Log, fieldData);
   SetFieldInteger(fieldData, "ReversedTriangleOrientation", flowMesh.ReversedTriangles ? 1 : 0);
   SetFieldCount(
     fieldData, "FlipRepairMovedVertices", static_cast<vtkIdType>(result.FlipRepair.MovedVertices));
@@ -275,6 +300,7 @@ vtkSphericalConformalMap::vtkSphericalConformalMap()
   this->MaximumNumberOfIterations = defaults.FlowIterations;
   this->ConvergenceTolerance = defaults.FlowTolerance;
   this->CenterBetweenSteps = defaults.CenterBetweenSteps;
+  this->Repair = defaults.Repair;
   this->FillHoles = defaults.FillHoles;
   this->KeepLargestComponent = defaults.KeepLargestComponent;
 }
@@ -348,6 +374,7 @@ void vtkSphericalConformalMap::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntrinsicDelaunay: " << this->IntrinsicDelaunay << "\n";
   os << indent << "IntrinsicDelaunayAngle: " << this->IntrinsicDelaunayAngle << "\n";
   os << indent << "FlipRepairPasses: " << this->FlipRepairPasses << "\n";
+  os << indent << "Repair: " << this->Repair << "\n";
   os << indent << "FillHoles: " << this->FillHoles << "\n";
   os << indent << "KeepLargestComponent: " << this->KeepLargestComponent << "\n";
 }

@@ -19,8 +19,13 @@
  * inward. The mesh must then be a closed, edge- and vertex-manifold, connected surface of
  * genus 0 with finite coordinates; otherwise the filter fails with an
  * error naming every problem found (holes, non-manifold edges or vertices, components,
- * genus). Options repair two of them: FillHoles closes boundary loops,
- * KeepLargestComponent drops all but the largest connected component.
+ * genus). By default (Repair) such a mesh is repaired into a genus-0 proxy instead
+ * (mobius::RepairMesh: duplicate and degenerate triangles removed, non-manifold vertices
+ * split, triangles oriented, small loose parts dropped, holes filled with faired patches,
+ * handles cut), with a warning that names each repair and its size; field data
+ * `MeshRepairs` holds the same phrases. With Repair off the filter is strict: it fails with
+ * an error naming every problem, and only FillHoles (close boundary loops) and
+ * KeepLargestComponent (drop all but the largest component) repair, on request.
  *
  * Output: the spherical map, i.e. the (repaired) mesh with points on the unit sphere,
  * carrying:
@@ -30,11 +35,15 @@
  *   coloring) and `LogAreaRatio`: each triangle's distortion (mobius::vtk::AddDistortionArrays);
  * - point data `InputPointId` (id type): the index of the point in this filter's input
  *   (for a mesh from vtkSurfaceMeshReader, the vertex number in the file), -1 for a point
- *   FillHoles created. Repairs drop unused points and merge duplicates, so output point i
+ *   a repair created (a hole's patch). Repairs drop unused points, merge duplicates and
+ *   split non-manifold vertices (the copies share their InputPointId), so output point i
  *   is in general not input point i; the later filters pass this array on, so results can
  *   name the input's vertices;
- * - every point and cell array of the input (points and triangles created by FillHoles
- *   get zero values);
+ * - cell data `InputCellId` (id type): the same for the triangles, the index of the
+ *   triangle in the input with its polygons split into triangles, -1 for a triangle a
+ *   repair created;
+ * - every point and cell array of the input (points and triangles a repair created get
+ *   zero values);
  * - field data: `ConformalFlowIterations`, `ConformalFlowRelativeChange`,
  *   `ConformalFlowConverged` (0/1), `ConformalFlowLinearStart` (0/1: the flow started from
  *   the linear conformal map), `ConformalFlowFactorizations` (numeric Cholesky
@@ -191,7 +200,19 @@ public:
 
   ///@{
   /**
-   * Close the input's holes (boundary loops) instead of failing. Default off.
+   * Repair a mesh that is not a closed, connected, manifold, consistently oriented genus-0
+   * surface into a genus-0 proxy of it instead of failing (see the class description).
+   * Default on; off is the strict mode.
+   */
+  vtkSetMacro(Repair, vtkTypeBool);
+  vtkGetMacro(Repair, vtkTypeBool);
+  vtkBooleanMacro(Repair, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * With Repair off: close the input's holes (boundary loops) instead of failing. Default
+   * off. (Repair closes them anyway.)
    */
   vtkSetMacro(FillHoles, vtkTypeBool);
   vtkGetMacro(FillHoles, vtkTypeBool);
@@ -200,8 +221,9 @@ public:
 
   ///@{
   /**
-   * Keep only the largest connected component instead of failing when there are
-   * several. Default off.
+   * Keep only the largest connected component instead of failing when there are several
+   * (with Repair: when another one is not small against it, see
+   * mobius::kLooseComponentShare; smaller ones are dropped anyway). Default off.
    */
   vtkSetMacro(KeepLargestComponent, vtkTypeBool);
   vtkGetMacro(KeepLargestComponent, vtkTypeBool);
@@ -224,6 +246,7 @@ protected:
   int IntrinsicDelaunay = INTRINSIC_DELAUNAY_AUTOMATIC;
   double IntrinsicDelaunayAngle = 1.0;
   int FlipRepairPasses = 100;
+  vtkTypeBool Repair;
   vtkTypeBool FillHoles;
   vtkTypeBool KeepLargestComponent;
 

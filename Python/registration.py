@@ -51,7 +51,9 @@ def _default_options():
         "candidate": None if candidate < 0 else candidate,
         "iterations": conformal.GetMaximumNumberOfIterations(),  # maximum conformal flow steps
         "tolerance": conformal.GetConvergenceTolerance(),  # conformal flow convergence tolerance
-        "fill_holes": bool(conformal.GetFillHoles()),  # close holes instead of rejecting open meshes
+        # repair a mesh that is no closed genus-0 surface into a genus-0 proxy (False: refuse it)
+        "repair": bool(conformal.GetRepair()),
+        "fill_holes": bool(conformal.GetFillHoles()),  # with repair=False: close holes instead of refusing
         "keep_largest_component": bool(conformal.GetKeepLargestComponent()),
         "allow_poor_maps": False,  # accept degenerate conformal maps instead of raising
         "threads": registration.GetNumberOfThreads(),  # threads per threaded filter (0: automatic); same results
@@ -154,13 +156,20 @@ class Registration:
     """The map from the source's vertices to points on the target surface.
 
     Row i of every per-vertex array belongs to source vertex i (numbered as in the input:
-    file order, or the rows of the vertices array), listed in `source_vertex`.
+    file order, or the rows of the vertices array), listed in `source_vertex`: every vertex
+    of the source as given, also when its repair merged, dropped or split some.
 
-    - `target_triangle` (n,): the triangle of the target's (repaired) map the vertex lands in;
+    - `target_triangle` (n,): the triangle of the target the vertex lands in (the target's
+      triangles as given, polygons split into triangles in order; with repair=False and
+      fill_holes, a triangle of its repaired map);
     - `target_vertices` (n, 3): that triangle's corners, numbered as the target's input
-      vertices (-1: a vertex that fill_holes created);
+      vertices (-1 only for a vertex that fill_holes created with repair=False);
     - `barycentric` (n, 3): the point's barycentric coordinates in that triangle;
     - `mapped_points` (n, 3): the point on the target surface;
+    - `repaired` (n,): 0 where the row is the image of the vertex itself; otherwise 1 (the
+      source's repair left no point of it: the image of its closest point on the repaired
+      surface), plus 2 where the image fell on a patch the target's repair created and was
+      moved to the target's own surface (RepairedVertex);
     - `transform` (3, 3): the rotation (or reflection) aligning the two spherical maps;
     - `quality`: the main figures (registration error, conformal distortion of each map,
       refinement residuals when refined); `fields`: every numeric field of the output;
@@ -189,6 +198,9 @@ class Registration:
         self.target_vertices = point_array("TargetInputPointIds").astype(np.int64).reshape(-1, 3)[order]
         self.barycentric = point_array("TargetBarycentric").reshape(-1, 3)[order]
         self.mapped_points = point_array("MappedPoints").reshape(-1, 3)[order]
+        repaired = point_data.GetArray("RepairedVertex")
+        self.repaired = (vtk_to_numpy(repaired).astype(np.int64).ravel()[order] if repaired is not None
+                         else np.zeros(len(source_vertex), dtype=np.int64))
         self.transform = np.asarray(fields["Rotation"], dtype=float).reshape(3, 3)
         self.landmark_residuals = np.atleast_1d(np.asarray(fields.get("LandmarkResidual", []), dtype=float))
         self.quality = quality
@@ -267,6 +279,7 @@ def _registration_filter(options, errors):
     registration = errors.watch(vtkMobiusRegistration())
     registration.SetMaximumNumberOfIterations(int(options["iterations"]))
     registration.SetConvergenceTolerance(float(options["tolerance"]))
+    registration.SetRepair(bool(options["repair"]))
     registration.SetFillHoles(bool(options["fill_holes"]))
     registration.SetKeepLargestComponent(bool(options["keep_largest_component"]))
     registration.SetAllowPoorMaps(bool(options["allow_poor_maps"]))
@@ -304,8 +317,9 @@ def register(source, target, **options):
     """Registers `source` onto `target` and returns a Registration.
 
     `source`, `target`: a mesh file name (.obj .off .ply .stl .vtp .vtk), a vtkPolyData, or
-    a (vertices, faces) pair of arrays ((n, 3) floats, (m, 3) vertex numbers). Both must be
-    closed genus-0 triangle surfaces (see fill_holes, keep_largest_component).
+    a (vertices, faces) pair of arrays ((n, 3) floats, (m, 3) vertex numbers). A mesh that is
+    no closed, connected, manifold genus-0 surface is repaired into a genus-0 proxy (repair,
+    with a warning and the figures in `fields`); the result still has a row per vertex as given.
 
     Options (defaults as mobius-register's): refine=True, basis_size=80 (2 to 500), polish=True (end the
     refinement with its geometric polish; False as --no-polish), both_directions=True (polish
@@ -313,7 +327,10 @@ def register(source, target, **options):
     resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
     candidate=None (keep this candidate's refined map, 0..candidates-1, as --candidate, for a
-    map that came out turned while a warning named a near-equal runner-up), iterations=100, tolerance=1e-4, fill_holes=False, keep_largest_component=False,
+    map that came out turned while a warning named a near-equal runner-up), iterations=100, tolerance=1e-4,
+    repair=True (False: refuse a mesh that is no closed genus-0 surface, as --no-repair),
+    fill_holes=False (with repair=False: close holes), keep_largest_component=False (map the
+    largest part also when another is not small against it),
     landmarks=() (pairs (source vertex, target vertex) of input vertex numbers whose images
     are known: the rotation is chosen by them and the refinement maps them exactly; their
     residuals are `landmark_residuals`), landmark_mode=0 (1: a Moebius transform sends the

@@ -15,8 +15,8 @@ For each mesh and for a bent copy of it, runs vtkSymmetryDetection on three sphe
 and writes
   DIR/symmetry_distances.csv   one row per run: the symmetry distance (0 symmetric, about 0.71
                                no better than an unrelated signal), the flow's degenerate-map
-                               reason if any, the seconds; meshes that cannot be mapped (genus
-                               > 0, ...) get their error instead;
+                               reason if any, the seconds; meshes that cannot be mapped (two
+                               parts of one size, ...) get their error instead;
   DIR/symmetry_distances.png   the cumulative distribution of the distances for each
                                variant (Figure 8; matplotlib);
   DIR/symmetry_asymmetry.png   the first mesh colored by its per-vertex Asymmetry, and its
@@ -369,7 +369,7 @@ def render_picture(mesh, name, output, path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("meshes", nargs="+", help="closed genus-0 meshes (.off .obj .ply .stl .vtp .vtk)")
+    parser.add_argument("meshes", nargs="+", help="meshes (.off .obj .ply .stl .vtp .vtk); one that is no closed genus-0 surface is repaired into one")
     parser.add_argument("--output", default="symmetry_distances_output", help="folder for the results")
     parser.add_argument("--resolution", type=int, default=128, help="scale-factor grid size")
     parser.add_argument("--mobius-factor", type=float, default=3.0,

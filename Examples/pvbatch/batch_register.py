@@ -29,6 +29,8 @@ parser.add_argument("--output", default="batch_output", help="folder for the res
 parser.add_argument("--resolution", type=int, default=256, help="SO3 Register resolution")
 parser.add_argument("--no-refine", action="store_true",
                     help="keep the Möbius map (Dense Correspondence) instead of refining it")
+parser.add_argument("--no-repair", action="store_true",
+                    help="refuse a mesh that is no closed genus-0 surface instead of repairing it")
 parser.add_argument("--max-failures", type=int, default=0,
                     help="exit with status 1 when more meshes than this fail (default 0)")
 parser.add_argument("--threads", type=int, default=0, metavar="N",
@@ -65,6 +67,7 @@ def registration_for(source_path, watch=lambda algorithm: algorithm):
     registration.SetTargetName(args.template)
     registration.SetResolution(args.resolution)
     registration.SetRefine(not args.no_refine)
+    registration.SetRepair(not args.no_repair)
     registration.SetNumberOfThreads(args.threads)
     return registration
 

@@ -1,6 +1,6 @@
-"""Checks batch_register.py's summary.csv from its test: the template registered to itself
-with no rotation and no error, the genus-2 mesh failed with the filter's reason, naming it,
-and the other mesh registered, its map written."""
+"""Checks batch_register.py's summary.csv from its test (run with --no-repair): the template
+registered to itself with no rotation and no error, the genus-2 mesh failed with the filter's
+reason, naming it, and the other mesh registered, its map written."""
 import csv
 import os
 import sys

@@ -21,6 +21,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,6 +35,44 @@ namespace mobius
 {
 namespace vtk
 {
+namespace
+{
+bool NeedsTriangulation(vtkPolyData* input)
+{
+  if (input->GetNumberOfStrips() > 0 || input->GetNumberOfVerts() > 0 ||
+    input->GetNumberOfLines() > 0)
+  {
+    return true;
+  }
+  vtkCellArray* polys = input->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    if (polys->GetCellSize(c) != 3)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+}
+
+vtkSmartPointer<vtkPolyData> TriangulatedSurface(vtkPolyData* input)
+{
+  if (!NeedsTriangulation(input))
+  {
+    return input;
+  }
+  vtkNew<vtkPolyData> shallow;
+  shallow->ShallowCopy(input);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(shallow);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  return triangulate->GetOutput();
+}
+
 std::string ExtractPoints(vtkPolyData* input, Points& points)
 {
   const vtkIdType n = input->GetNumberOfPoints();

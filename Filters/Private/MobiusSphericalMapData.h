@@ -13,7 +13,8 @@
 #define MobiusSphericalMapData_h
 
 #include "MeshTypes.h"
-#include "vtkType.h" // For vtkIdType
+#include "vtkSmartPointer.h" // For vtkSmartPointer
+#include "vtkType.h"         // For vtkIdType
 
 #include <functional>
 #include <string>
@@ -35,9 +36,17 @@ constexpr const char* SurfaceAreaArrayName = "SurfaceArea";
 /// Point array of vtkSphericalConformalMap's output: the index of the point in the filter's
 /// input (-1 for a point a repair created), i.e. the vertex number in the mesh file.
 constexpr const char* InputPointIdArrayName = "InputPointId";
+/// Cell array of vtkSphericalConformalMap's output: the triangle of its input (polygons split
+/// into triangles, TriangulatedSurface) each triangle came from, -1 for one a repair created.
+constexpr const char* InputCellIdArrayName = "InputCellId";
 
 /// Distance from 1 that a spherical map's point radius may have.
 constexpr double UnitSphereTolerance = 1e-6;
+
+/// The input's triangles: `input` itself when its cells are all triangles, else a copy with
+/// polygons and strips split into triangles (in cell order) and vertex and line cells
+/// dropped with their data. The triangles every filter and result number.
+vtkSmartPointer<vtkPolyData> TriangulatedSurface(vtkPolyData* input);
 
 /// Copies the points; fails on an empty point set or NaN/Inf coordinates.
 std::string ExtractPoints(vtkPolyData* input, Points& points);

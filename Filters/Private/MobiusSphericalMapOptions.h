@@ -15,6 +15,7 @@ namespace vtk
 template <class Filter>
 void CopySphericalMapOptions(Filter* filter, RegistrationParameters& options)
 {
+  options.Repair = filter->GetRepair();
   options.FillHoles = filter->GetFillHoles();
   options.KeepLargestComponent = filter->GetKeepLargestComponent();
   options.AllowPoorMaps = filter->GetAllowPoorMaps();

@@ -99,7 +99,7 @@ with open(os.path.join(work, "mesh.xyz"), "w") as f:
     f.write("1 2 3\n")
 expect_failure(["mesh.xyz", hand, "-o", "out2"], ["mesh.xyz", "unknown mesh format"], ["out2"])
 eight = os.path.join(mesh_dir, "eight.off")
-expect_failure([eight, hand, "-o", "out3"], [eight, "genus 2"], ["out3"])
+expect_failure([eight, hand, "-o", "out3", "--no-repair"], [eight, "genus 2"], ["out3"])
 expect_failure([hand, hand, "-o", "out4", "--resolution", "33"], ["--resolution"], ["out4"], code_expected=2)
 expect_failure([hand, hand, "-o", "out5", "--bogus"], ["unknown option --bogus"], ["out5"], code_expected=2)
 shutil.copy(hand, os.path.join(work, "mine.vtp.off"))
@@ -283,8 +283,8 @@ check("existing file without --force" in " ".join(out.split("Exit status:")[-1].
 open_mesh = "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n"
 with open(os.path.join(work, "open.off"), "w") as f:
     f.write(open_mesh)
-expect_failure(["open.off", hand, "-o", "hint"], ["open.off", "--fill-holes"], ["hint"])
-code, _, err = run("open.off", hand, "-o", "hint")
+expect_failure(["open.off", hand, "-o", "hint", "--no-repair"], ["open.off", "--fill-holes"], ["hint"])
+code, _, err = run("open.off", hand, "-o", "hint", "--no-repair")
 check("FillHoles" not in err, f"hint names a VTK property: {err!r}")
 
 # A failed rename leaves nothing behind: OUT.vtp is a folder, so moving the VTP into place
@@ -441,23 +441,28 @@ with open(os.path.join(work, "hand-vt.obj"), "w") as f:
                  for a, b, c in reversed(faces))
 expect_numbering(correspondence("hand-vt.obj", hand), range(n), lambda s: s, "OBJ with vt/vn as source")
 expect_numbering(correspondence(hand, "hand-vt.obj"), range(n), lambda s: s, "OBJ with vt/vn as target")
-# An unused vertex in front: file vertex s + 1 is hand vertex s.
+# The CSV has a row for every vertex of the file, in its numbering, whatever the repair
+# dropped or added. An unused vertex in front: file vertex s + 1 is hand vertex s.
 write_off(os.path.join(work, "hand-unused.off"), ["5 5 5"] + points,
           [[a + 1, b + 1, c + 1] for a, b, c in faces])
-expect_numbering(correspondence("hand-unused.off", hand), range(1, n + 1), lambda s: s - 1, "unused vertex")
-# A separate tetrahedron in front, dropped by --keep-largest-component.
+expect_numbering(correspondence("hand-unused.off", hand), range(n + 1), lambda s: s - 1, "unused vertex")
+# A small separate tetrahedron in front: a loose part, dropped (its rows map through the repair).
 tetra = ["3 3 3", "3.1 3 3", "3 3.1 3", "3 3 3.1"]
 write_off(os.path.join(work, "hand-tetra.off"), tetra + points,
           [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]] + [[a + 4, b + 4, c + 4] for a, b, c in faces])
-expect_numbering(correspondence("hand-tetra.off", hand, "--keep-largest-component"), range(4, n + 4),
-                 lambda s: s - 4, "--keep-largest-component")
-# Two neighbouring faces removed: --fill-holes closes the four-edge hole around a new vertex,
-# which is -1 in the CSV; the others keep their numbers.
+for options in ((), ("--no-repair", "--keep-largest-component")):
+    expect_numbering(correspondence("hand-tetra.off", hand, *options), range(n + 4), lambda s: s - 4,
+                     f"loose tetrahedron {' '.join(options)}")
+# Two neighbouring faces removed: the four-edge hole is closed, by default or by --fill-holes
+# without the other repairs; the target vertices are always the hand's own.
 first = set(faces[0])
 neighbour = next(k for k in range(1, len(faces)) if len(first & set(faces[k])) == 2)
 holed = [face for k, face in enumerate(faces) if k not in (0, neighbour)]
 write_off(os.path.join(work, "hand-hole.off"), points, holed)
-expect_numbering(correspondence("hand-hole.off", hand, "--fill-holes"), [-1, *range(n)], lambda s: s,
-                 "--fill-holes", fraction=0.95)
+for options in ((), ("--no-repair", "--fill-holes")):
+    expect_numbering(correspondence("hand-hole.off", hand, *options), range(n), lambda s: s,
+                     f"hole {' '.join(options)}", fraction=0.95)
+    expect_numbering(correspondence(hand, "hand-hole.off", *options), range(n), lambda s: s,
+                     f"onto a hole {' '.join(options)}", fraction=0.95)
 
 harness.finish()

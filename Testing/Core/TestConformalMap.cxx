@@ -401,8 +401,13 @@ void TestFlowInput()
   Triangles t;
   MakeIcosphere(1, p, t);
   Points huge = p * 1e100;
-  const int exponent = ScaleToUnitOrder(huge);
+  const int exponent = ScaleToUnitOrder(huge, t);
   MOBIUS_CHECK(huge.cwiseAbs().maxCoeff() >= 1.0 && huge.cwiseAbs().maxCoeff() < 2.0);
+  // A point no triangle uses, far away: the scale is the surface's.
+  Points stray(p.rows() + 1, 3);
+  stray.topRows(p.rows()) = p;
+  stray.row(p.rows()) << 1e100, 0, 0;
+  MOBIUS_CHECK(ScaleToUnitOrder(stray, t) == std::ilogb(p.cwiseAbs().maxCoeff()));
   MOBIUS_CHECK(((huge * std::ldexp(1.0, exponent)).array() == (p * 1e100).array()).all());
   Vector areas;
   std::string problem;

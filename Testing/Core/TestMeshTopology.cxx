@@ -1,5 +1,6 @@
 // Topology analysis and repairs on generated meshes whose answers are known by construction.
 #include "CoreTest.h"
+#include "HoleFilling.h"
 #include "Icosphere.h"
 #include "MeshTopology.h"
 #include "RepairMesh.h"
@@ -72,7 +73,7 @@ void TestHolesAndFilling()
   MOBIUS_CHECK(r.Genus == -1);
   MOBIUS_CHECK(DescribeTopologyProblems(r).find("2 boundary loops") != std::string::npos);
   MeshProvenance provenance;
-  MOBIUS_CHECK(FillHoles(p, holed, &provenance) == 2);
+  MOBIUS_CHECK(FillHoles(p, holed, &provenance).Holes == 2);
   MOBIUS_CHECK(holed.rows() == t.rows()); // three-edge loops get one triangle, no new point
   MOBIUS_CHECK(AnalyzeMeshTopology(p, holed).IsTopologicalSphere());
 
@@ -93,7 +94,7 @@ void TestHolesAndFilling()
   MOBIUS_CHECK(r.BoundaryEdges == 5);
   MOBIUS_CHECK(r.UnusedPoints == 1);
   const Index pointsBefore = p.rows();
-  MOBIUS_CHECK(FillHoles(p, holed, &provenance) == 1);
+  MOBIUS_CHECK(FillHoles(p, holed, &provenance).Holes == 1);
   MOBIUS_CHECK(p.rows() == pointsBefore + 1); // the fan's center
   MOBIUS_CHECK(provenance.PointSource.back() == -1);
   MOBIUS_CHECK(provenance.TriangleSource.back() == -1);
@@ -276,7 +277,7 @@ void TestDuplicateTriangles()
   corners << 0, 0, 0, 1, 0, 0, 0, 1, 0;
   Triangles single(1, 3);
   single << 0, 1, 2;
-  MOBIUS_CHECK(FillHoles(corners, single) == 1);
+  MOBIUS_CHECK(FillHoles(corners, single).Holes == 1);
   const MeshTopologyReport pillow = AnalyzeMeshTopology(corners, single);
   MOBIUS_CHECK(pillow.IsClosedManifold() && pillow.DuplicateTriangles == 1);
   MOBIUS_CHECK(!pillow.IsTopologicalSphere());
@@ -384,15 +385,15 @@ void TestRepairMesh()
   withComponent.topRows(damaged.rows()) = damaged;
   withComponent.row(damaged.rows()) << spherePoints + 1, spherePoints + 2, spherePoints + 3;
 
-  const RepairedMesh refused = RepairMesh(extended, withComponent, { false, false });
+  const RepairedMesh refused = RepairMesh(extended, withComponent, { false, false, false });
   MOBIUS_CHECK(refused.Problem.find("Set FillHoles") != std::string::npos);
   MOBIUS_CHECK(refused.Problem.find("Set KeepLargestComponent") != std::string::npos);
 
-  const RepairedMesh mesh = RepairMesh(extended, withComponent, { true, true });
+  const RepairedMesh mesh = RepairMesh(extended, withComponent, { false, true, true });
   MOBIUS_CHECK(mesh.Problem.empty());
   MOBIUS_CHECK(mesh.Topology.IsTopologicalSphere());
-  MOBIUS_CHECK(mesh.FilledHoles == 2);
-  MOBIUS_CHECK(mesh.MergedDuplicatePoints == 0);
+  MOBIUS_CHECK(mesh.Log.FilledHoles == 2);
+  MOBIUS_CHECK(mesh.Log.MergedDuplicatePoints == 0);
   MOBIUS_CHECK(mesh.Points.rows() == spherePoints);
   MOBIUS_CHECK(mesh.Triangles.rows() == t.rows());
   MOBIUS_CHECK(static_cast<Index>(mesh.Provenance.PointSource.size()) == mesh.Points.rows());
@@ -439,9 +440,9 @@ void TestRepairMesh()
       std::swap(soupTriangles(f, 1), soupTriangles(f, 2));
     }
   }
-  const RepairedMesh merged = RepairMesh(soup, soupTriangles, { false, false });
+  const RepairedMesh merged = RepairMesh(soup, soupTriangles, { false, false, false });
   MOBIUS_CHECK(merged.Problem.empty());
-  MOBIUS_CHECK(merged.MergedDuplicatePoints == soup.rows() - spherePoints);
+  MOBIUS_CHECK(merged.Log.MergedDuplicatePoints == soup.rows() - spherePoints);
   MOBIUS_CHECK(merged.Points.rows() == spherePoints);
   MOBIUS_CHECK(merged.Topology.IsTopologicalSphere());
   MOBIUS_CHECK(merged.Topology.InconsistentlyOrientedEdges == 0);
@@ -459,17 +460,17 @@ void TestZeroAreaRepairs()
   Points sliver;
   Triangles split;
   InsertSliver(p, t, (p.row(a) + p.row(t(0, 1))) / 2, sliver, split);
-  const RepairedMesh kept = RepairMesh(sliver, split, { false, false });
+  const RepairedMesh kept = RepairMesh(sliver, split, { false, false, false });
   MOBIUS_CHECK(kept.Problem.empty());
   MOBIUS_CHECK(kept.Topology.ZeroAreaTriangles == 1);
-  MOBIUS_CHECK(kept.CollapsedEdges == 0);
+  MOBIUS_CHECK(kept.Log.CollapsedEdges == 0);
   MOBIUS_CHECK(kept.Points.rows() == m + 1 && kept.Triangles.rows() == split.rows());
 
   Points coincident = sliver;
   coincident.row(m) = p.row(a);
-  const RepairedMesh collapsed = RepairMesh(coincident, split, { false, false });
+  const RepairedMesh collapsed = RepairMesh(coincident, split, { false, false, false });
   MOBIUS_CHECK(collapsed.Problem.empty());
-  MOBIUS_CHECK(collapsed.CollapsedEdges == 1);
+  MOBIUS_CHECK(collapsed.Log.CollapsedEdges == 1);
   MOBIUS_CHECK(collapsed.Topology.IsTopologicalSphere());
   MOBIUS_CHECK(collapsed.Topology.ZeroAreaTriangles == 0);
   MOBIUS_CHECK(collapsed.Points.rows() == m && collapsed.Triangles.rows() == t.rows());
@@ -483,7 +484,7 @@ void TestZeroAreaRepairs()
   line << 0, 0, 0, 1, 2, 3, 2, 4, 6, 3, 6, 9;
   Triangles tetrahedron(4, 3);
   tetrahedron << 0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2;
-  const RepairedMesh flat = RepairMesh(line, tetrahedron, { false, false });
+  const RepairedMesh flat = RepairMesh(line, tetrahedron, { false, false, false });
   MOBIUS_CHECK(flat.Problem.find("every triangle has zero area") != std::string::npos);
 }
 

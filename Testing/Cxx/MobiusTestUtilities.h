@@ -31,7 +31,8 @@
 
 namespace mobius_test
 {
-/// Records the last error and warning an object reports (instead of printing them).
+/// Records the last error and warning an object reports (instead of printing them), and every
+/// warning, one a line.
 class MessageCatcher
 {
 public:
@@ -42,12 +43,17 @@ public:
       auto self = static_cast<MessageCatcher*>(clientData);
       const std::string message = callData ? static_cast<const char*>(callData) : "";
       (event == vtkCommand::ErrorEvent ? self->Error : self->Warning) = message;
+      if (event == vtkCommand::WarningEvent)
+      {
+        self->Warnings += message + "\n";
+      }
     });
     observed->AddObserver(vtkCommand::ErrorEvent, this->Callback);
     observed->AddObserver(vtkCommand::WarningEvent, this->Callback);
   }
   std::string Error;
   std::string Warning;
+  std::string Warnings;
 
 private:
   vtkNew<vtkCallbackCommand> Callback;

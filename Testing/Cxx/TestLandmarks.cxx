@@ -13,6 +13,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkMath.h"
 #include "vtkPointData.h"
 
 #include <array>
@@ -159,14 +160,21 @@ int ExpectMergedDuplicates(vtkPolyData* mesh, const std::array<vtkIdType, 3>& ve
     registration->AddLandmark(lastCopy[v], v);
   }
   registration->Update();
-  // The copies named are ones the merge dropped: no output point stands for them.
-  vtkDataArray* kept = registration->GetOutput()->GetPointData()->GetArray("InputPointId");
-  for (vtkIdType i = 0; kept && i < kept->GetNumberOfTuples(); ++i)
+  // The copies named are ones the merge dropped: the map has no point of theirs, and their
+  // rows (the output has one per point of the soup) come through the repair, on their
+  // landmark's target vertex.
+  vtkPolyData* output = registration->GetOutput();
+  MOBIUS_EXPECT(output->GetNumberOfPoints() == soup->GetNumberOfPoints());
+  vtkDataArray* repaired = output->GetPointData()->GetArray("RepairedVertex");
+  vtkDataArray* mapped = output->GetPointData()->GetArray("MappedPoints");
+  MOBIUS_EXPECT(repaired && mapped);
+  for (vtkIdType v : vertices)
   {
-    for (vtkIdType v : vertices)
-    {
-      MOBIUS_EXPECT(static_cast<vtkIdType>(kept->GetComponent(i, 0)) != lastCopy[v]);
-    }
+    MOBIUS_EXPECT(repaired && repaired->GetComponent(lastCopy[v], 0) == 1);
+    double image[3], target[3];
+    mapped->GetTuple(lastCopy[v], image);
+    mesh->GetPoint(v, target);
+    MOBIUS_EXPECT(std::sqrt(vtkMath::Distance2BetweenPoints(image, target)) < 1e-6);
   }
   vtkDataArray* residuals = registration->GetOutput()->GetFieldData()->GetArray("LandmarkResidual");
   MOBIUS_EXPECT(residuals && residuals->GetNumberOfTuples() == 3);

@@ -297,13 +297,27 @@ int TestMobiusRegistration(int, char*[])
   whole->SetResolution(16);
   whole->SetRefine(false);
   {
+    // Strict: refused, naming the mesh and the option.
+    whole->RepairOff();
     mobius_test::MessageCatcher catcher(whole);
     mobius_test::MessageCatcher executiveCatcher(whole->GetExecutive());
     whole->Update();
-    std::cout << "open source mesh: " << catcher.Error << "\n";
+    std::cout << "open source mesh, strict: " << catcher.Error << "\n";
     MOBIUS_EXPECT(catcher.Error.find("the open cow: ") != std::string::npos);
     MOBIUS_EXPECT(catcher.Error.find("FillHoles") != std::string::npos);
     MOBIUS_EXPECT(whole->GetOutput()->GetNumberOfPoints() == 0);
+  }
+  {
+    // By default repaired, with a warning, and the output has the mesh's own rows.
+    whole->RepairOn();
+    mobius_test::MessageCatcher catcher(whole);
+    whole->Update();
+    std::cout << "open source mesh: " << catcher.Warnings;
+    MOBIUS_EXPECT(catcher.Error.empty());
+    MOBIUS_EXPECT(catcher.Warnings.find("1 hole filled") != std::string::npos);
+    MOBIUS_EXPECT(whole->GetOutput()->GetNumberOfPoints() == open->GetNumberOfPoints());
+    MOBIUS_EXPECT(whole->GetOutput()->GetNumberOfCells() == open->GetNumberOfCells());
+    MOBIUS_EXPECT(whole->GetOutput()->GetPointData()->GetArray("RepairedVertex") != nullptr);
   }
 
   // A property out of range: not clamped, an error naming it, before any stage runs.

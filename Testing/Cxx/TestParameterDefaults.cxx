@@ -50,6 +50,7 @@ int TestParameterDefaults(int, char*[])
     core.FlowIterations);
   ExpectEqual("conformal ConvergenceTolerance", conformal->GetConvergenceTolerance(), core.FlowTolerance);
   ExpectEqual("conformal CenterBetweenSteps", conformal->GetCenterBetweenSteps() != 0, core.CenterBetweenSteps);
+  ExpectEqual("conformal Repair", conformal->GetRepair() != 0, core.Repair);
   ExpectEqual("conformal FillHoles", conformal->GetFillHoles() != 0, core.FillHoles);
   ExpectEqual("conformal KeepLargestComponent", conformal->GetKeepLargestComponent() != 0,
     core.KeepLargestComponent);

@@ -77,6 +77,7 @@ python_expected = {
     "candidates": registration.GetNumberOfCandidates(),
     "iterations": conformal.GetMaximumNumberOfIterations(),
     "tolerance": conformal.GetConvergenceTolerance(), "fill_holes": conformal.GetFillHoles(),
+    "repair": conformal.GetRepair(),
     "keep_largest_component": conformal.GetKeepLargestComponent(),
     "threads": registration.GetNumberOfThreads(),
 }

@@ -105,21 +105,32 @@ print(f"Möbius map: mean error {mobius_error:.4f} of sqrt(area)")
 assert "RefinementOrthogonalityResidual" not in mobius.quality
 assert mobius_error < 0.25 and refined_error < mobius_error
 
-# Errors: the filter's message, as a Python exception.
+# A mesh with defects is repaired, with a warning naming the repair, and the result has a
+# row per vertex as given; with repair=False the filter's message, as a Python exception.
 open_faces = faces[1:]  # one triangle removed: a hole
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    repaired = register((vertices, open_faces), hand, resolution=64, refine=False)
+assert any("1 hole filled" in str(w.message) for w in caught), [str(w.message) for w in caught]
+assert len(repaired.source_vertex) == len(vertices) and repaired.repaired.shape == (len(vertices),)
 try:
-    register((vertices, open_faces), hand, resolution=64, refine=False)
-    raise AssertionError("an open mesh was registered")
+    register((vertices, open_faces), hand, resolution=64, refine=False, repair=False)
+    raise AssertionError("an open mesh was registered without repair")
 except RegistrationError as error:
     print("open mesh:", error)
     assert str(error).startswith("source: ") and "FillHoles" in str(error), error
 genus_two = os.path.join(mesh_dir, "eight.off")
 try:
-    register(genus_two, hand, resolution=64, refine=False)
-    raise AssertionError("a genus-2 mesh was registered")
+    register(genus_two, hand, resolution=64, refine=False, repair=False)
+    raise AssertionError("a genus-2 mesh was registered without repair")
 except RegistrationError as error:
     print("genus 2:", error)
     assert genus_two in str(error) and "genus" in str(error).lower(), error
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    eight = register(genus_two, hand, resolution=64, refine=False)
+assert any("2 handles cut" in str(w.message) for w in caught), [str(w.message) for w in caught]
+assert np.array_equal(eight.source_vertex, np.arange(315)) and np.isfinite(eight.mapped_points).all()
 # The filters turn an empty mesh into an empty output (VTK's convention); register() says so.
 try:
     register((np.zeros((0, 3)), np.zeros((0, 3), dtype=int)), hand, resolution=64, refine=False)

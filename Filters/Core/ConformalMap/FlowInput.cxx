@@ -4,15 +4,28 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <sstream>
 
 namespace mobius
 {
-int ScaleToUnitOrder(Points& points)
+int ScaleToUnitOrder(Points& points, const Triangles& triangles)
 {
-  const double largestCoordinate = points.size() > 0 ? points.cwiseAbs().maxCoeff() : 0.0;
+  double largestCoordinate = 0.0;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index v = triangles(t, k);
+      for (int c = 0; v >= 0 && v < points.rows() && c < 3; ++c)
+      {
+        const double magnitude = std::abs(points(v, c));
+        largestCoordinate = std::isfinite(magnitude) ? std::max(largestCoordinate, magnitude) : largestCoordinate;
+      }
+    }
+  }
   const int scaleExponent = largestCoordinate > 0.0 ? std::ilogb(largestCoordinate) : 0;
   points *= std::ldexp(1.0, -scaleExponent);
   return scaleExponent;

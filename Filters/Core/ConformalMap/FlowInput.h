@@ -9,15 +9,18 @@
 
 namespace mobius
 {
-/// Scales `points` by the power of two that brings the largest coordinate to [1, 2) and
-/// returns its exponent e (the input is the result times 2^e; 0 for all-zero points).
+/// Scales `points` by the power of two that brings the largest finite coordinate of the
+/// points the triangles use to [1, 2) and returns its exponent e (the input is the result
+/// times 2^e; 0 for all-zero points). Points no triangle uses do not count: one stray point
+/// at 1e100 (which the repair drops) would otherwise squeeze the surface to 1e-100, where
+/// its areas underflow.
 ///
 /// The geometry squares lengths twice (areas as norms of cross products, cotangent
 /// weights): coordinates beyond about 1e75 or below 1e-75 overflow or underflow double
 /// precision (a mesh at 1e-100 had "320 zero-area triangles", one at 1e100 "no area").
 /// Scaling by a power of two is exact, so everything runs on coordinates of order 1 and
 /// the outputs are scaled back exactly.
-int ScaleToUnitOrder(Points& points);
+int ScaleToUnitOrder(Points& points, const Triangles& triangles);
 
 /// Reverses every triangle if the surface encloses a negative volume, and says whether it
 /// did. The flow keeps the orientation of the triangles: facing outward, the map comes out

@@ -1,6 +1,6 @@
 #include "MeshTopology.h"
 
-#include "StableSortRun.h"
+#include "MeshEdges.h"
 
 #include <Eigen/Geometry>
 
@@ -15,195 +15,6 @@ namespace mobius
 {
 namespace
 {
-// Disjoint sets with path halving; used for components and for vertex fans.
-class UnionFind
-{
-public:
-  explicit UnionFind(Index size)
-    : Parent(static_cast<size_t>(size))
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), Index(0));
-  }
-  Index Find(Index i)
-  {
-    while (this->Parent[i] != i)
-    {
-      this->Parent[i] = this->Parent[this->Parent[i]];
-      i = this->Parent[i];
-    }
-    return i;
-  }
-  void Union(Index a, Index b) { this->Parent[this->Find(a)] = this->Find(b); }
-
-private:
-  std::vector<Index> Parent;
-};
-
-// A triangle takes part in edge topology only if its indices are in range and distinct.
-std::vector<char> ValidTriangles(const Triangles& triangles, Index numberOfPoints)
-{
-  std::vector<char> valid(static_cast<size_t>(triangles.rows()), 0);
-  for (Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Index a = triangles(t, 0), b = triangles(t, 1), c = triangles(t, 2);
-    const bool inRange = a >= 0 && b >= 0 && c >= 0 && a < numberOfPoints &&
-      b < numberOfPoints && c < numberOfPoints;
-    valid[t] = inRange && a != b && b != c && c != a;
-  }
-  return valid;
-}
-
-// One directed side of an edge: triangle t goes from From to To (its corners k and k+1).
-struct HalfEdge
-{
-  Index Low, High; // the edge's endpoints, sorted: the key that groups the sides of an edge
-  Index From;
-  Index Triangle;
-};
-
-// The items that produce(emit) emits, sorted by (key(item), then less) where key is an
-// integer in [0, keys): produce runs twice, once to count each key's items and once to put
-// them in place (stable), then each key's run is sorted by less. The runs here are a
-// vertex's few edges or triangles, so this is linear where a comparison sort of the whole
-// array was the topology analysis' largest cost, and it writes the items once, straight to
-// their place.
-template <typename Item, typename Produce, typename Key, typename Less>
-std::vector<Item> BucketSorted(Index keys, Produce produce, Key key, Less less)
-{
-  std::vector<Index> start(static_cast<size_t>(keys) + 1, 0);
-  produce([&](const Item& item) { ++start[static_cast<size_t>(key(item)) + 1]; });
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<Item> sorted(static_cast<size_t>(start.back()));
-  {
-    std::vector<Index> fill(start.begin(), start.end() - 1);
-    produce([&](const Item& item) {
-      sorted[static_cast<size_t>(fill[static_cast<size_t>(key(item))]++)] = item;
-    });
-  }
-  for (Index k = 0; k < keys; ++k)
-  {
-    StableSortRun(sorted.begin() + start[k], sorted.begin() + start[k + 1], less);
-  }
-  return sorted;
-}
-
-// All half-edges of the valid triangles (whose points are below numberOfPoints), sorted by
-// (Low, High) so that the sides of an edge are adjacent (in triangle order within an edge).
-std::vector<HalfEdge> SortedHalfEdges(
-  const Triangles& triangles, const std::vector<char>& valid, Index numberOfPoints)
-{
-  auto produce = [&](auto emit) {
-    for (Index t = 0; t < triangles.rows(); ++t)
-    {
-      if (valid[t])
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          const Index from = triangles(t, k), to = triangles(t, (k + 1) % 3);
-          emit(HalfEdge{ std::min(from, to), std::max(from, to), from, t });
-        }
-      }
-    }
-  };
-  if (numberOfPoints > 4 * 3 * triangles.rows() + 1024)
-  {
-    // Indices far beyond the mesh's size (OrientConsistently takes the largest index as
-    // the point count): a bucket per index would cost more than a comparison sort. Same
-    // order: stable, by (Low, High).
-    std::vector<HalfEdge> halfEdges;
-    produce([&](const HalfEdge& h) { halfEdges.push_back(h); });
-    std::stable_sort(halfEdges.begin(), halfEdges.end(), [](const HalfEdge& x, const HalfEdge& y) {
-      return x.Low != y.Low ? x.Low < y.Low : x.High < y.High;
-    });
-    return halfEdges;
-  }
-  return BucketSorted<HalfEdge>(
-    numberOfPoints, produce, [](const HalfEdge& h) { return h.Low; },
-    [](const HalfEdge& x, const HalfEdge& y) { return x.High < y.High; });
-}
-
-// Calls visit(begin, end) for each group of half-edges sharing an edge.
-template <typename Visitor>
-void ForEachEdge(const std::vector<HalfEdge>& halfEdges, Visitor visit)
-{
-  size_t begin = 0;
-  while (begin < halfEdges.size())
-  {
-    size_t end = begin + 1;
-    while (end < halfEdges.size() && halfEdges[end].Low == halfEdges[begin].Low &&
-      halfEdges[end].High == halfEdges[begin].High)
-    {
-      ++end;
-    }
-    visit(begin, end);
-    begin = end;
-  }
-}
-
-// Boundary loops as vertex sequences, following each boundary edge in its triangle's
-// direction. `closed` tells whether the chain came back to its start (it does not when the
-// orientation is inconsistent or a vertex has more outgoing than incoming boundary edges).
-void TraceBoundaryLoops(const std::vector<HalfEdge>& halfEdges,
-  std::vector<std::vector<Index>>& loops, std::vector<char>& closed)
-{
-  // Directed boundary edges from -> to, looked up by their start.
-  std::unordered_map<Index, std::vector<Index>> outgoing;
-  Index count = 0;
-  ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
-    if (end - begin == 1)
-    {
-      const HalfEdge& h = halfEdges[begin];
-      outgoing[h.From].push_back(h.From == h.Low ? h.High : h.Low);
-      ++count;
-    }
-  });
-  // Start chains at vertices with more outgoing than incoming edges first, so that open
-  // chains are traced from their beginning; then the rest, which are cycles.
-  std::unordered_map<Index, Index> balance;
-  for (const auto& entry : outgoing)
-  {
-    balance[entry.first] += static_cast<Index>(entry.second.size());
-    for (Index to : entry.second)
-    {
-      balance[to] -= 1;
-    }
-  }
-  std::vector<Index> starts;
-  for (const auto& entry : outgoing)
-  {
-    starts.push_back(entry.first);
-  }
-  std::sort(starts.begin(), starts.end(), [&](Index a, Index b) {
-    const bool openA = balance[a] > 0, openB = balance[b] > 0;
-    return openA != openB ? openA : a < b;
-  });
-  for (Index start : starts)
-  {
-    while (!outgoing[start].empty())
-    {
-      std::vector<Index> loop{ start };
-      Index current = start;
-      while (true)
-      {
-        auto& next = outgoing[current];
-        if (next.empty())
-        {
-          break;
-        }
-        current = next.back();
-        next.pop_back();
-        if (current == start)
-        {
-          break;
-        }
-        loop.push_back(current);
-      }
-      loops.push_back(std::move(loop));
-      closed.push_back(current == start);
-    }
-  }
-}
-
 double TriangleDoubleArea(const Points& points, Index a, Index b, Index c)
 {
   const Eigen::Vector3d pa = points.row(a), pb = points.row(b), pc = points.row(c);
@@ -494,6 +305,30 @@ std::string DescribeTopologyProblems(const MeshTopologyReport& r)
   return joined;
 }
 
+MeshProvenance IdentityProvenance(Index points, Index triangles)
+{
+  MeshProvenance identity;
+  identity.PointSource.resize(static_cast<size_t>(points));
+  std::iota(identity.PointSource.begin(), identity.PointSource.end(), Index(0));
+  identity.TriangleSource.resize(static_cast<size_t>(triangles));
+  std::iota(identity.TriangleSource.begin(), identity.TriangleSource.end(), Index(0));
+  return identity;
+}
+
+void ComposeProvenance(MeshProvenance& provenance, const MeshProvenance& step)
+{
+  auto compose = [](const std::vector<Index>& before, const std::vector<Index>& rows) {
+    std::vector<Index> composed(rows.size());
+    for (size_t i = 0; i < rows.size(); ++i)
+    {
+      composed[i] = rows[i] >= 0 ? before[rows[i]] : -1;
+    }
+    return composed;
+  };
+  provenance.PointSource = compose(provenance.PointSource, step.PointSource);
+  provenance.TriangleSource = compose(provenance.TriangleSource, step.TriangleSource);
+}
+
 MeshProvenance MergeDuplicatePoints(Points& points, Triangles& triangles)
 {
   const Index n = points.rows();
@@ -634,77 +469,8 @@ MeshProvenance ExtractLargestComponent(Points& points, Triangles& triangles)
   return provenance;
 }
 
-Index FillHoles(Points& points, Triangles& triangles, MeshProvenance* provenance)
-{
-  const std::vector<char> valid = ValidTriangles(triangles, points.rows());
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, points.rows());
-  std::vector<std::vector<Index>> loops;
-  std::vector<char> closed;
-  TraceBoundaryLoops(halfEdges, loops, closed);
-
-  std::vector<Eigen::Vector3d> newPoints;
-  std::vector<std::array<Index, 3>> newTriangles;
-  Index filled = 0;
-  for (size_t l = 0; l < loops.size(); ++l)
-  {
-    const std::vector<Index>& loop = loops[l];
-    // A loop that visits a vertex twice would need the fan to pass through that vertex
-    // twice: leave it (and open chains) alone rather than create a non-manifold vertex.
-    std::vector<Index> sorted = loop;
-    std::sort(sorted.begin(), sorted.end());
-    if (!closed[l] || loop.size() < 3 ||
-      std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-    {
-      continue;
-    }
-    ++filled;
-    // The loop runs along its triangles' direction, so the patch runs against it.
-    if (loop.size() == 3)
-    {
-      newTriangles.push_back({ loop[0], loop[2], loop[1] });
-      continue;
-    }
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (Index v : loop)
-    {
-      centroid += points.row(v).transpose();
-    }
-    const Index center = points.rows() + static_cast<Index>(newPoints.size());
-    newPoints.push_back(centroid / static_cast<double>(loop.size()));
-    for (size_t i = 0; i < loop.size(); ++i)
-    {
-      newTriangles.push_back({ loop[(i + 1) % loop.size()], loop[i], center });
-    }
-  }
-
-  if (provenance)
-  {
-    provenance->PointSource.resize(static_cast<size_t>(points.rows()));
-    std::iota(provenance->PointSource.begin(), provenance->PointSource.end(), Index(0));
-    provenance->PointSource.resize(provenance->PointSource.size() + newPoints.size(), -1);
-    provenance->TriangleSource.resize(static_cast<size_t>(triangles.rows()));
-    std::iota(provenance->TriangleSource.begin(), provenance->TriangleSource.end(), Index(0));
-    provenance->TriangleSource.resize(
-      provenance->TriangleSource.size() + newTriangles.size(), -1);
-  }
-  const Index oldPoints = points.rows(), oldTriangles = triangles.rows();
-  points.conservativeResize(oldPoints + static_cast<Index>(newPoints.size()), 3);
-  for (size_t i = 0; i < newPoints.size(); ++i)
-  {
-    points.row(oldPoints + static_cast<Index>(i)) = newPoints[i].transpose();
-  }
-  triangles.conservativeResize(oldTriangles + static_cast<Index>(newTriangles.size()), 3);
-  for (size_t i = 0; i < newTriangles.size(); ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      triangles(oldTriangles + static_cast<Index>(i), k) = newTriangles[i][k];
-    }
-  }
-  return filled;
-}
-
-bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
+bool OrientConsistently(
+  Triangles& triangles, Index* reversedTriangles, std::vector<EdgeKey>* disagreeing)
 {
   if (reversedTriangles)
   {
@@ -724,6 +490,7 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
   {
     Index Triangle;
     bool SameDirection; // both traverse the shared edge the same way: orientations disagree
+    Index Low, High;    // the shared edge
   };
   std::vector<std::array<Neighbour, 3>> adjacency(static_cast<size_t>(triangles.rows()));
   std::vector<unsigned char> neighbourCount(static_cast<size_t>(triangles.rows()), 0);
@@ -737,8 +504,8 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
     {
       const HalfEdge &x = halfEdges[begin], &y = halfEdges[begin + 1];
       const bool same = x.From == y.From;
-      adjacency[x.Triangle][neighbourCount[x.Triangle]++] = { y.Triangle, same };
-      adjacency[y.Triangle][neighbourCount[y.Triangle]++] = { x.Triangle, same };
+      adjacency[x.Triangle][neighbourCount[x.Triangle]++] = { y.Triangle, same, x.Low, x.High };
+      adjacency[y.Triangle][neighbourCount[y.Triangle]++] = { x.Triangle, same, x.Low, x.High };
     }
   });
   if (!manifold)
@@ -747,6 +514,7 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
   }
   // Breadth-first: decide for each triangle whether to reverse it; a contradiction means
   // the surface is not orientable (a Moebius strip, a Klein bottle).
+  std::vector<EdgeKey> contradictions;
   std::vector<signed char> reverse(static_cast<size_t>(triangles.rows()), -1);
   std::vector<Index> queue;
   for (Index seed = 0; seed < triangles.rows(); ++seed)
@@ -772,10 +540,20 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
         }
         else if (reverse[nb.Triangle] != wanted)
         {
-          return false;
+          if (!disagreeing)
+          {
+            return false;
+          }
+          contradictions.emplace_back(nb.Low, nb.High);
         }
       }
     }
+  }
+  if (disagreeing)
+  {
+    std::sort(contradictions.begin(), contradictions.end());
+    contradictions.erase(std::unique(contradictions.begin(), contradictions.end()), contradictions.end());
+    *disagreeing = std::move(contradictions);
   }
   Index count = 0;
   for (Index t = 0; t < triangles.rows(); ++t)
@@ -790,6 +568,6 @@ bool OrientConsistently(Triangles& triangles, Index* reversedTriangles)
   {
     *reversedTriangles = count;
   }
-  return true;
+  return !disagreeing || disagreeing->empty();
 }
 }

@@ -8,6 +8,7 @@
 #include "MeshTypes.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mobius
@@ -62,6 +63,13 @@ struct MeshProvenance
   std::vector<Index> TriangleSource;
 };
 
+/// Each row its own source.
+MeshProvenance IdentityProvenance(Index points, Index triangles);
+
+/// Follows `provenance` (rows of the original mesh) by a repair's `step` (rows of the mesh
+/// before it): afterwards each row names its source in the original mesh; -1 stays -1.
+void ComposeProvenance(MeshProvenance& provenance, const MeshProvenance& step);
+
 /// Merges points with exactly equal coordinates (a triangle soup, or an STL-style file) into
 /// their first occurrence, renumbers the triangles and drops those that then name a point
 /// twice. Unused points are kept, so that merging alone changes nothing else.
@@ -78,18 +86,23 @@ MeshProvenance CollapseZeroLengthEdges(Points& points, Triangles& triangles, Ind
 /// Invalid triangles (bad index, repeated point) are dropped as well.
 MeshProvenance ExtractLargestComponent(Points& points, Triangles& triangles);
 
-/// Closes every boundary loop: a loop of three edges with one triangle, a longer loop with a
-/// fan around a new point at the loop's centroid (a new point keeps the fan from creating
-/// edges between existing points, which could make the surface non-manifold). Needs
-/// consistently oriented triangles; loops that cannot be traced as a directed cycle (at
-/// non-manifold vertices) are left open. Returns the number of loops filled.
-Index FillHoles(Points& points, Triangles& triangles, MeshProvenance* provenance = nullptr);
+/// An edge by its two end points, smaller first.
+using EdgeKey = std::pair<Index, Index>;
+
+inline EdgeKey MakeEdgeKey(Index a, Index b)
+{
+  return a < b ? EdgeKey(a, b) : EdgeKey(b, a);
+}
 
 /// Reverses triangles so that every two-triangle edge is traversed once in each direction,
 /// component by component (each component keeps the orientation of its first triangle).
-/// Returns false, leaving the triangles unchanged, when the surface is not orientable or has
-/// non-manifold edges. `reversedTriangles` receives how many triangles were reversed.
-bool OrientConsistently(Triangles& triangles, Index* reversedTriangles = nullptr);
+/// Returns false when the surface is not orientable or has non-manifold edges. Without
+/// `disagreeing`, the triangles are then left unchanged; with it, a surface with no orientation
+/// is still oriented along a breadth-first spanning tree of its triangles, and `disagreeing`
+/// receives (sorted) the edges where two triangles still disagree: cut there, it is oriented.
+/// `reversedTriangles` receives how many triangles were reversed.
+bool OrientConsistently(Triangles& triangles, Index* reversedTriangles = nullptr,
+  std::vector<EdgeKey>* disagreeing = nullptr);
 }
 
 #endif

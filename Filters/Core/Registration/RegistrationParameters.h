@@ -96,6 +96,10 @@ struct RegistrationParameters
   int FlowIterations = ConformalMapParameters().MaximumNumberOfIterations;
   double FlowTolerance = ConformalMapParameters().ConvergenceTolerance;
   bool CenterBetweenSteps = ConformalMapParameters().MobiusCentering;
+  /// Repair a mesh that is no closed, connected, manifold, oriented genus-0 surface into a
+  /// genus-0 proxy (RepairMesh.h); false: strict, refuse it (FillHoles and
+  /// KeepLargestComponent still repair on request).
+  bool Repair = true;
   bool FillHoles = false;
   bool KeepLargestComponent = false;
   /// false: a degenerate conformal map (DegenerateMap in its field data) is an error
