@@ -1,14 +1,16 @@
 // Short non-separating loops of a closed surface of genus > 0, for cutting its handles (a
 // hand fused to a thigh, arms fused to the body: the loop around the fused place is short).
 //
-// Through a base point, the shortest loop that does not separate the surface is the first of
-// Erickson & Whittlesey's greedy system of loops ("Greedy optimal homotopy and homology
-// generators", SODA 2005): the shortest-path tree from the base point, a maximum spanning
-// tree of the dual graph weighted by the length of each remaining edge's loop (its two tree
-// paths and itself), and the shortest of the edges left in neither tree. Over every base point
-// that would be the shortest non-separating loop; here the base points are spread over the
-// surface until they cover it within a sixth of the best loop's length, then they are the
-// points of the best loop, which find a shorter loop crossing it when there is one.
+// Through a base point, the shortest loop that does not separate the surface is one of the
+// loops of its shortest-path tree: two tree paths and the edge that joins their ends
+// (Erickson & Whittlesey, "Greedy optimal homotopy and homology generators", SODA 2005).
+// Whether such a loop separates the surface is told by a basis of cocycles made once from a
+// tree-cotree decomposition: a loop separates if and only if it crosses each of them an even
+// number of times, which the XOR of its edges' classes gives. So a search from a base point
+// bounded by the best loop so far never looks beyond that bound. Over every base point that
+// would be the shortest non-separating loop; here the base points are spread over the surface
+// until they cover it within a sixth of the best loop's length, then they are points of the
+// best loop, which find a shorter loop crossing it when there is one.
 #ifndef mobius_HandleCutting_h
 #define mobius_HandleCutting_h
 
