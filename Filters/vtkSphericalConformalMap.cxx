@@ -95,6 +95,11 @@ std::string PrepareFlowMesh(
   {
     return error;
   }
+  error = mobius::CheckCoordinateRange(points, triangles);
+  if (!error.empty())
+  {
+    return error;
+  }
   flowMesh.ScaleExponent = mobius::ScaleToUnitOrder(points, triangles);
   mobius::RepairedMesh& mesh = flowMesh.Mesh;
   mesh = mobius::RepairMesh(std::move(points), std::move(triangles),

@@ -62,11 +62,40 @@ public:
     if (cell >= 0)
     {
       location.Weights = this->Barycentric(cell, Eigen::Vector3d(closest[0], closest[1], closest[2]));
+      return location;
+    }
+    return this->NearestCorner(x);
+  }
+
+private:
+  // The corner nearest to x, in long double (whose range holds the squares of coordinates
+  // near the largest doubles, which the locator's distances overflow): a point so far away
+  // that the locator finds no cell.
+  Location NearestCorner(const Eigen::Vector3d& x) const
+  {
+    Location location;
+    long double best = -1;
+    for (Index t = 0; t < this->Faces.rows(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        long double distance = 0;
+        for (int c = 0; c < 3; ++c)
+        {
+          const long double d = static_cast<long double>(this->Corners(this->Faces(t, k), c)) - x[c];
+          distance += d * d;
+        }
+        if (best < 0 || distance < best)
+        {
+          best = distance;
+          location.Triangle = t;
+          location.Weights = Eigen::Vector3d::Unit(k);
+        }
+      }
     }
     return location;
   }
 
-private:
   // Barycentric coordinates of a point of triangle t (least squares in its plane).
   Eigen::Vector3d Barycentric(vtkIdType t, const Eigen::Vector3d& x) const
   {

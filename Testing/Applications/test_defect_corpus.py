@@ -146,17 +146,19 @@ def main():
             noisy_path = os.path.join(work, "noisy.off")
             defect_corpus.write_off(noisy_path, noisy, faces)
             reference = pair_errors(programs, other_path, noisy_path, noisy, rest, faces, work)
-        found = pair_errors(programs, other_path, defective, points, rest, faces, work)
-        if code != 0 or not repairs or found is None:
-            failures.append(f"{defect}: refused or not repaired (exit {code}, {repairs})")
+        found = pair_errors(programs, other_path, defective, points, rest, faces, work) if code == 0 else None
+        if found is None:
+            failures.append(f"{defect}: refused (exit {code})")
             print(f"| {defect} | refused | | | |")
             continue
+        if not repairs:
+            failures.append(f"{defect}: mapped without a warning naming the repair")
         figures = [(outside_mean(r, zone), outside_mean(f, zone)) for r, f in zip(reference, found)]
         for (before, after), way in zip(figures, ("onto", "from")):
             if after > (1 + RELATIVE_TOLERANCE) * before + ABSOLUTE_TOLERANCE:
                 failures.append(f"{defect}: the map {way} it has mean error {after:.4f} outside the "
                                 f"repaired region, the clean pair {before:.4f}")
-        repair_text = repairs[0].split("Repaired the mesh ", 1)[-1]
+        repair_text = repairs[0].split("Repaired the mesh ", 1)[-1] if repairs else "(no warning)"
         print(f"| {defect} | {repair_text} | {figures[0][0]:.4f} / {figures[0][1]:.4f} | "
               f"{figures[1][0]:.4f} / {figures[1][1]:.4f} | {len(zone)} |")
     for failure in failures:

@@ -527,6 +527,16 @@ for fmt in ("off", "obj", "ply-little", "vtp-ascii"):
     name = write(file_name("unreferenced", fmt), bytes_of(fmt, far))
     expect_result(f"unreferenced vertices {fmt}", name, far[0], sources=range(len(far[0])),
                   off_surface={0, len(far[0]) - 1})
+# One unused vertex near the largest doubles: it sets neither the scale (the surface's areas
+# would underflow: "every triangle has zero area") nor a distance the locator could hold.
+for far_away in (1e100, 1e300):
+    stray = ([*points, (far_away, 0, 0)], faces)
+    expect_result(f"an unused vertex at {far_away:g}", off(f"stray{far_away:g}", stray), stray[0],
+                  sources=range(len(stray[0])), off_surface={len(points)})
+# A vertex of a triangle at 1e300: the areas cannot be computed over that range; the error
+# names the point (it said "every triangle has zero area").
+spike = ([*points[:-1], (1e300, 0, 0)], faces)
+expect_error("a vertex at 1e300", off("spike", spike), [f"point {len(points) - 1} is 1e+300 from the origin"])
 
 # NaN in a point array of the user's own: carried into the output (the user's data, not
 # ours to change), with a warning that says so.

@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace mobius
 {
@@ -29,6 +30,50 @@ int ScaleToUnitOrder(Points& points, const Triangles& triangles)
   const int scaleExponent = largestCoordinate > 0.0 ? std::ilogb(largestCoordinate) : 0;
   points *= std::ldexp(1.0, -scaleExponent);
   return scaleExponent;
+}
+
+std::string CheckCoordinateRange(const Points& points, const Triangles& triangles)
+{
+  std::vector<double> edges;
+  double largest = 0;
+  Index farthest = -1;
+  for (Index t = 0; t < triangles.rows(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = triangles(t, k), b = triangles(t, (k + 1) % 3);
+      if (a < 0 || b < 0 || a >= points.rows() || b >= points.rows() || !points.row(a).allFinite())
+      {
+        continue;
+      }
+      const double magnitude = points.row(a).cwiseAbs().maxCoeff();
+      if (magnitude > largest)
+      {
+        largest = magnitude;
+        farthest = a;
+      }
+      const double length = (points.row(a) - points.row(b)).cwiseAbs().maxCoeff();
+      if (length > 0 && std::isfinite(length))
+      {
+        edges.push_back(length);
+      }
+    }
+  }
+  if (edges.empty())
+  {
+    return {};
+  }
+  std::nth_element(edges.begin(), edges.begin() + static_cast<long>(edges.size() / 2), edges.end());
+  const double median = edges[edges.size() / 2];
+  if (!(largest > 1e100 * median))
+  {
+    return {};
+  }
+  std::ostringstream message;
+  message << "point " << farthest << " is " << largest << " from the origin while the median edge is "
+          << median << " long: double precision cannot compute the surface's areas over that "
+          << "range (a stray point? remove it or rescale)";
+  return message.str();
 }
 
 bool FaceOutward(const Points& points, Triangles& triangles)

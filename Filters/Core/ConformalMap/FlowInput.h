@@ -22,6 +22,12 @@ namespace mobius
 /// the outputs are scaled back exactly.
 int ScaleToUnitOrder(Points& points, const Triangles& triangles);
 
+/// The coordinates of the points the triangles use span more than double precision can
+/// compute areas over (the farthest point more than 1e100 times the median edge length from
+/// the origin): after ScaleToUnitOrder the rest of the surface would underflow and read as
+/// "every triangle has zero area". The problem, naming the point; empty if none.
+std::string CheckCoordinateRange(const Points& points, const Triangles& triangles);
+
 /// Reverses every triangle if the surface encloses a negative volume, and says whether it
 /// did. The flow keeps the orientation of the triangles: facing outward, the map comes out
 /// orientation-preserving and outward-facing on the sphere.
