@@ -1,5 +1,6 @@
 #include "vtkMobiusRegistration.h"
 
+#include "MobiusInputRows.h"
 #include "MobiusPipeline.h"
 #include "MobiusSphericalMapOptions.h"
 #include "MobiusPullBack.h"
@@ -264,11 +265,15 @@ int vtkMobiusRegistration::ComputeOutput(
   {
     targetSphere->ShallowCopy(result.TargetCentered);
   }
+  // On the target as given (every vertex of it) when its repair changed it.
   vtkPolyData* pulledBack = vtkPolyData::GetData(outputVector, 3);
+  const vtkSmartPointer<vtkPolyData> targetSurface =
+    !options.InputsAreCenteredMaps && mobius::vtk::MapWasRepaired(result.TargetMap)
+    ? mobius::vtk::SurfaceAsGiven(target)
+    : vtkSmartPointer<vtkPolyData>(result.TargetCentered);
   if (pulledBack &&
     !mobius::vtk::PullBackToTarget(result.Aligned,
-      result.Correspondence->GetPointData()->GetArray("MappedPoints"), result.TargetCentered,
-      pulledBack))
+      result.Correspondence->GetPointData()->GetArray("MappedPoints"), targetSurface, pulledBack))
   {
     vtkWarningMacro(<< "The map could not be shown on the target's own mesh (output 3).");
   }

@@ -26,7 +26,8 @@
  * map turned by the rotational alignment (vtkSO3Register's output, with the source's point
  * arrays); port 2, the target's centered spherical map (vtkMobiusCenter's output).
  *
- * Port 3 shows the map on the target's own mesh, where the source placed by the map (port
+ * Port 3 shows the map on the target's own mesh (the mesh as given, every vertex of it, when
+ * a repair changed it), where the source placed by the map (port
  * 0) may fold over itself: the target's surface and point arrays, and per vertex where on
  * the source it comes from (its closest point on the placed source): `SourceCellId`,
  * `SourceBarycentric`, `SourcePoints`, `SourceInputPointIds` and the source's point arrays

@@ -324,6 +324,14 @@ void CarryProxyArrays(vtkPolyData* correspondence, const std::vector<vtkIdType>&
 }
 }
 
+vtkSmartPointer<vtkPolyData> SurfaceAsGiven(vtkPolyData* mesh)
+{
+  const vtkSmartPointer<vtkPolyData> triangles = TriangulatedSurface(mesh);
+  Points points;
+  ExtractPoints(triangles, points);
+  return AsMapOfItself(triangles, points);
+}
+
 bool MapWasRepaired(vtkPolyData* map)
 {
   auto repairs = vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("MeshRepairs"));

@@ -38,6 +38,11 @@ constexpr int kImageMovedOffPatch = 2;
 /// `MeshRepairs` is not empty), so that its rows and triangles are not its input's.
 bool MapWasRepaired(vtkPolyData* map);
 
+/// `mesh` as given (polygons split into triangles) with the arrays of a spherical map's
+/// surface: point data `SurfacePoints` (its own points) and `InputPointId` (its own numbers),
+/// for whatever shows a result on the user's own mesh.
+vtkSmartPointer<vtkPolyData> SurfaceAsGiven(vtkPolyData* mesh);
+
 /// `correspondence` (one row per point of `sourceMap`, triangles of `targetMap`) on the
 /// meshes as given (see above): the source's points, cells and point arrays, the map's
 /// arrays (`TargetCellId` and `TargetBarycentric` in the triangulated target as given,

@@ -318,6 +318,16 @@ int TestMobiusRegistration(int, char*[])
     MOBIUS_EXPECT(whole->GetOutput()->GetNumberOfPoints() == open->GetNumberOfPoints());
     MOBIUS_EXPECT(whole->GetOutput()->GetNumberOfCells() == open->GetNumberOfCells());
     MOBIUS_EXPECT(whole->GetOutput()->GetPointData()->GetArray("RepairedVertex") != nullptr);
+    // As the target: the map on the target's own mesh (port 3) has its vertices as given.
+    vtkNew<vtkMobiusRegistration> onto;
+    onto->SetSourceData(bull);
+    onto->SetTargetData(open);
+    onto->SetResolution(16);
+    onto->SetRefine(false);
+    onto->Update();
+    MOBIUS_EXPECT(onto->GetOutput(3)->GetNumberOfPoints() == open->GetNumberOfPoints());
+    MOBIUS_EXPECT(onto->GetOutput(3)->GetNumberOfCells() == open->GetNumberOfCells());
+    MOBIUS_EXPECT(onto->GetOutput()->GetNumberOfPoints() == bull->GetNumberOfPoints());
   }
 
   // A property out of range: not clamped, an error naming it, before any stage runs.
