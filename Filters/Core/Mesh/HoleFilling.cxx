@@ -2,6 +2,7 @@
 
 #include "MeshAdjacency.h"
 #include "MeshEdges.h"
+#include "PortableMath.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
@@ -130,7 +131,9 @@ DiscLayout LayOutDisc(const std::vector<double>& rimAngles)
   {
     for (double angle : rings[r].Angles)
     {
-      disc.Planar.emplace_back(radii[r] * std::cos(angle), radii[r] * std::sin(angle));
+      double sine, cosine; // portable: the patch, and so the map, the same on every CPU
+      PortableSinCos(angle, sine, cosine);
+      disc.Planar.emplace_back(radii[r] * cosine, radii[r] * sine);
     }
   }
   for (size_t r = 0; r + 1 < rings.size(); ++r)
@@ -149,7 +152,9 @@ DiscLayout LayOutDisc(const std::vector<double>& rimAngles)
 
 // Mean-value weights of each new point's neighbours in the planar layout: sum over the
 // triangles at i of tan(angle at i / 2) / |x_j - x_i| for each other corner j. They
-// reproduce the layout exactly, so fairing keeps its spacing.
+// reproduce the layout exactly, so fairing keeps its spacing. tan(angle / 2) is
+// sin / (1 + cos), from the cross and dot products without the C library's (CPU-dependent)
+// trigonometry.
 std::vector<std::vector<std::pair<Index, double>>> MeanValueWeights(const DiscLayout& disc, Index rim)
 {
   std::vector<std::vector<std::pair<Index, double>>> weights(disc.Planar.size());
@@ -163,8 +168,8 @@ std::vector<std::vector<std::pair<Index, double>>> MeanValueWeights(const DiscLa
         continue;
       }
       const Eigen::Vector2d a = disc.Planar[j] - disc.Planar[i], b = disc.Planar[l] - disc.Planar[i];
-      const double angle = std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
-      const double half = std::tan(angle / 2);
+      const double half =
+        std::abs(a.x() * b.y() - a.y() * b.x()) / (a.norm() * b.norm() + a.dot(b));
       weights[i].emplace_back(j, half / a.norm());
       weights[i].emplace_back(l, half / b.norm());
     }
