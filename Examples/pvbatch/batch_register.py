@@ -9,10 +9,11 @@ Each rank takes every size-th mesh and registers it to the template with Mobius 
 (vtkMobiusRegistration: the whole job, as mobius-register runs it; --no-refine keeps the
 paper's Möbius-only map) and writes DIR/<mesh>-to-template.vtp (the mesh placed on the
 template surface, with TargetCellId, TargetBarycentric, MappedPoints, the template's point
-arrays and every stage's field data). Rank 0 gathers one summary line per mesh into DIR/summary.csv; a mesh that
-cannot be mapped gets its error message there and does not stop the others. Each rank runs
-the threaded filters with its share of the cores (--threads, default: max(1, cores / K), cores
-the CPUs of its affinity mask, K the ranks of the node sharing them).
+arrays and every stage's field data; two meshes of one file name, which would write one
+file, are refused). Rank 0 gathers one summary line per mesh into DIR/summary.csv; a mesh
+that cannot be mapped gets its error message there and does not stop the others. Each rank
+runs the threaded filters with its share of the cores (--threads, default: max(1, cores / K),
+cores the CPUs of its affinity mask, K the ranks of the node sharing them).
 """
 import argparse
 import csv
@@ -92,6 +93,18 @@ def share_of_cores():
 
 threads = args.threads or share_of_cores()
 
+
+# Each mesh's output is named by its file name: two meshes of one name (in two folders)
+# would write one file.
+named = {}
+for path in args.meshes:
+    name = os.path.splitext(os.path.basename(path))[0]
+    if named.setdefault(name, path) != path:
+        if rank == 0:
+            print(f"batch_register: {named[name]} and {path} would both write "
+                  f"{os.path.join(args.output, name + '-to-template.vtp')}; rename one of the files",
+                  file=sys.stderr)
+        sys.exit(2)
 
 os.makedirs(args.output, exist_ok=True)
 rows = []

@@ -13,7 +13,10 @@ DegreeEnergies) and, for the spectral refinement, the surface's Laplace-Beltrami
 shape takes part in maps into memory instead of solving the eigenproblem again). They are
 cached in RESULTS/cache under the SHA-256 of the mesh file's bytes
 and of the parameters, so a rerun, or a run with meshes added, redoes only what is new; pair
-results are cached the same way. Ranks take shapes, then pairs, one at a time from a shared
+results are cached the same way. Every cache entry is written to a temporary file, flushed to
+disk and renamed into place, and its record holds the SHA-256 of the files it stands for: an
+entry that cannot be read (cut short, emptied, of another kind, or a file that does not match
+its record) is computed again, with a warning naming it. Ranks take shapes, then pairs, one at a time from a shared
 counter (dynamic balancing: large meshes do not hold the others up); each rank runs the
 threaded filters with its share of the cores (their NumberOfThreads): max(1, cores / K), cores
 the CPUs this rank may use (its affinity mask) and K the ranks of the node that share them
@@ -24,17 +27,26 @@ Modes: `all` registers every pair; `template` every mesh to --template; `nearest
 shape's --neighbours nearest shapes by descriptor, for collections too large for all pairs.
 
 Outputs in RESULTS:
-- shapes.csv: per mesh, its hash, vertices, status and error (a mesh that cannot be mapped
-  is recorded there and does not stop the others), seconds and rank;
+- shapes.csv: per mesh, its hash, vertices, status and error (a mesh that cannot be read or
+  mapped is recorded there and does not stop the others), seconds and rank;
 - pairs.csv: per pair, the transform, determinant, correlation score and coefficient,
   registration error, the refined map's orthogonality residual, distance, seconds, rank;
 - distances.csv and distances.png: the symmetric matrix of registration distances
   d = sqrt((1 - rho) / 2), rho the correlation coefficient of the aligned scale-factor
   signals (0: identical up to a conformal change; about 0.7: unrelated), rows and columns
   ordered by an average-linkage clustering (blank or black: pair not registered);
-- run.json: what was computed and what came from the cache, and the threads of each rank
+- run.json: what was computed and what came from the cache (damaged_cache_entries: the
+  entries that could not be read and were computed again), and the threads of each rank
   (threads_per_rank, indexed by rank);
-- with --write-maps, maps/SOURCE-to-TARGET.vtp (Dense Correspondence's data contract).
+- with --write-maps, maps/SOURCE-to-TARGET.vtp (Dense Correspondence's data contract); two
+  pairs whose names give one file name (shapes a-to-b and c, a and b-to-c) are refused
+  before any work.
+
+Shapes are named by their file names without the extension; a name taken by an earlier file
+gets -2, -3, ... (a name no other file has).
+
+Exit status: 0 when every mesh and pair succeeded (or at most --max-failures failed), 1 when
+more failed, 2 for a usage error or an output folder that cannot be written.
 """
 import argparse
 import csv
@@ -43,6 +55,7 @@ import json
 import math
 import os
 import sys
+import tempfile
 import time
 
 import numpy
@@ -138,10 +151,11 @@ threads_per_rank = comm.allgather(threads) if comm else [threads]
 # The refinement's eigenbasis: its size (the refinement's BasisSize) and the kind of basis
 # (vtkLaplaceBeltramiBasis's; the refinement refuses a stored basis of another kind anyway).
 BASIS_SIZE = 80
-SHAPE_PARAMETERS = {"version": 2, "descriptor_resolution": 64,
+# Version 3: records name the SHA-256 of the files they stand for.
+SHAPE_PARAMETERS = {"version": 3, "descriptor_resolution": 64,
                     "basis": {"size": BASIS_SIZE, "kind": "intrinsic Delaunay, lumped mass, v1"}
                     if args.refine == "spectral" else None}
-PAIR_PARAMETERS = {"version": 1, "resolution": args.resolution, "refine": args.refine}
+PAIR_PARAMETERS = {"version": 2, "resolution": args.resolution, "refine": args.refine}
 DESCRIPTOR_DEGREES = 16
 
 
@@ -160,29 +174,87 @@ def file_digest(path):
     return h.hexdigest()
 
 
-def write_json_atomically(path, value):
-    # Written beside and renamed: a run killed mid-write leaves no half file in the cache.
-    partial = f"{path}.{rank}.partial"
-    with open(partial, "w") as f:
-        json.dump(value, f, indent=1)
-    os.replace(partial, path)
+def warn(message):
+    print(f"register_collection: warning: {message}", file=sys.stderr, flush=True)
+
+
+def sync_folder(folder):
+    """Puts a rename in `folder` on disk (the entry, not only the file's bytes)."""
+    descriptor = os.open(folder, os.O_RDONLY)
+    try:
+        os.fsync(descriptor)
+    finally:
+        os.close(descriptor)
+
+
+def write_atomically(path, write):
+    """Runs write(temporary file name), puts the file on disk (fsync) and renames it to `path`:
+    a run killed at any moment leaves the old file or the new one, never a part of one, and a
+    failure leaves nothing behind. Returns the SHA-256 of what was written; OSError when it
+    cannot be written."""
+    folder = os.path.dirname(path) or "."
+    try:
+        handle, temporary = tempfile.mkstemp(dir=folder, prefix=os.path.basename(path) + ".", suffix=".partial")
+    except OSError as error:
+        raise OSError(error.errno, error.strerror, folder) from None  # the folder, not a made-up name
+    os.close(handle)
+    try:
+        write(temporary)
+        with open(temporary, "rb") as f:
+            digest = hashlib.sha256(f.read()).hexdigest()
+            os.fsync(f.fileno())
+        os.replace(temporary, path)
+    except BaseException as error:
+        try:
+            os.remove(temporary)
+        except OSError:
+            pass
+        if isinstance(error, OSError) and error.filename == temporary:
+            raise OSError(error.errno, error.strerror, path) from None
+        raise
+    sync_folder(folder)
+    return digest
+
+
+def write_json(path, value):
+    def write(temporary):
+        with open(temporary, "w") as f:
+            json.dump(value, f, indent=1)
+    return write_atomically(path, write)
 
 
 def write_polydata(data, path):
-    writer = vtkXMLPolyDataWriter()
-    writer.SetInputData(data)
-    writer.SetDataModeToBinary()  # bookworm's expat cannot read VTK 9.2's appended data back
-    partial = f"{path}.{rank}.partial.vtp"
-    writer.SetFileName(partial)
-    if writer.Write() != 1:
-        raise OSError(f"cannot write {path}")
-    os.replace(partial, path)
+    def write(temporary):
+        writer = vtkXMLPolyDataWriter()
+        messages = FilterMessages()
+        messages.watch(writer)
+        writer.SetInputData(data)
+        writer.SetDataModeToBinary()  # bookworm's expat cannot read VTK 9.2's appended data back
+        writer.SetFileName(temporary)
+        if writer.Write() != 1 or messages.messages:
+            raise OSError(f"{path}: cannot write the file ({'; '.join(messages.messages) or 'VTK writer failed'})")
+    return write_atomically(path, write)
 
 
 def write_array(array, path):
-    partial = f"{path}.{rank}.partial.npy"
-    numpy.save(partial, array)
-    os.replace(partial, path)
+    def write(temporary):
+        with open(temporary, "wb") as f:
+            numpy.save(f, array)
+    return write_atomically(path, write)
+
+
+def write_table(path, rows):
+    def write(temporary):
+        with open(temporary, "w", newline="") as f:
+            csv.writer(f).writerows(rows)
+    return write_atomically(path, write)
+
+
+def os_error_text(error):
+    """An OSError as one line naming the file: "PATH: Permission denied"."""
+    if error.filename and error.strerror:
+        return f"{error.filename}: {error.strerror}"
+    return str(error)
 
 
 def read_polydata(path):
@@ -190,6 +262,52 @@ def read_polydata(path):
     reader.SetFileName(path)
     reader.Update()
     return reader.GetOutput()
+
+
+class DamagedEntry(Exception):
+    """A cache entry that cannot be used: computed again."""
+
+
+def load_record(path):
+    """The JSON object cached at `path`; None when there is none. DamagedEntry when the file
+    is not a whole JSON object."""
+    try:
+        with open(path) as f:
+            record = json.load(f)
+    except FileNotFoundError:
+        return None
+    except (OSError, UnicodeDecodeError, ValueError) as error:
+        raise DamagedEntry(f"{path}: not a readable record ({error})") from None
+    if not isinstance(record, dict):
+        raise DamagedEntry(f"{path}: not a record (a JSON {type(record).__name__})")
+    return record
+
+
+def require(record, path, **kinds):
+    """Each named field of `record` of its kind (a type, or a tuple of types); DamagedEntry
+    naming the first that is not."""
+    for name, kind in kinds.items():
+        value = record.get(name)
+        if isinstance(value, bool) or not isinstance(value, kind):  # no field is a bool
+            raise DamagedEntry(f"{path}: the record's {name!r} is missing or malformed")
+
+
+def file_digest_or_none(path):
+    try:
+        return file_digest(path)
+    except OSError:
+        return None
+
+
+def require_file(path, digest, what):
+    """The file at `path` is the one the record names (its SHA-256); DamagedEntry if not."""
+    if not isinstance(digest, str):
+        raise DamagedEntry(f"{path}: the record names no {what}")
+    found = file_digest_or_none(path)
+    if found is None:
+        raise DamagedEntry(f"{path}: the {what} is missing")
+    if found != digest:
+        raise DamagedEntry(f"{path}: the {what} is not the one its record names (damaged or replaced)")
 
 
 def field_value(data, name, component=0):
@@ -234,28 +352,63 @@ if args.template:
     template_path = os.path.abspath(args.template)
     if template_path not in meshes:
         meshes.insert(0, template_path)
-names = []
-for path in meshes:
-    name = os.path.splitext(os.path.basename(path))[0]
-    names.append(name if name not in names else f"{name}-{len(names)}")
+
+
+def shape_names(paths):
+    """Each file's name without its extension; a name an earlier file took gets -2, -3, ...,
+    the first such name no file has (a-1.off keeps its name beside two files a.off)."""
+    stems = [os.path.splitext(os.path.basename(path))[0] for path in paths]
+    taken, chosen = set(stems), []
+    used = set()
+    for stem in stems:
+        name, k = stem, 2
+        while name in used or (name != stem and name in taken):
+            name, k = f"{stem}-{k}", k + 1
+        used.add(name)
+        chosen.append(name)
+    return chosen
+
+
+names = shape_names(meshes)
 cache = os.path.join(args.output, "cache")
-if rank == 0:
-    for folder in ("shapes", "pairs"):
-        os.makedirs(os.path.join(cache, folder), exist_ok=True)
-    if args.write_maps:
-        os.makedirs(os.path.join(args.output, "maps"), exist_ok=True)
-if comm:
-    comm.Barrier()
+
+
+def prepare_output():
+    """Makes the output's folders and checks that files can be written there; the reason
+    when they cannot (the run then stops before any work), else ""."""
+    try:
+        for folder in ("shapes", "pairs"):
+            os.makedirs(os.path.join(cache, folder), exist_ok=True)
+        if args.write_maps:
+            os.makedirs(os.path.join(args.output, "maps"), exist_ok=True)
+        handle, probe = tempfile.mkstemp(dir=args.output, prefix=".probe.")
+        os.close(handle)
+        os.remove(probe)
+    except OSError as error:
+        return f"--output {args.output}: cannot write the results there ({os_error_text(error)})"
+    return ""
+
+
+problem = prepare_output() if rank == 0 else None
+problem = comm.bcast(problem, root=0) if comm else problem
+if problem:
+    fail(problem)
 started = time.perf_counter()
 
 
 # --- per shape: centered map and descriptor -------------------------------------------------
 def shape_key(path):
-    return digest(file_digest(path).encode(), SHAPE_PARAMETERS)
+    """The cache key of the mesh file at `path`, or the reason it cannot be read (an OSError's
+    text): such a mesh fails alone."""
+    try:
+        return digest(file_digest(path).encode(), SHAPE_PARAMETERS), ""
+    except OSError as error:
+        return None, f"cannot read the file ({error.strerror or error})"
 
 
-keys = [shape_key(p) for p in meshes] if rank == 0 else None
-keys = comm.bcast(keys, root=0) if comm else keys
+keyed = [shape_key(p) for p in meshes] if rank == 0 else None
+keyed = comm.bcast(keyed, root=0) if comm else keyed
+keys = [key for key, _ in keyed]
 
 
 def shape_files(i):
@@ -267,15 +420,38 @@ def shape_files(i):
     return base + ".json", base + ".vtp", base + ".basis.npy"
 
 
-def map_shape(i):
+NUMBER = (int, float)
+
+
+def cached_shape(i):
+    """Shape i's cached record when the entry is whole: the record of a failure, or a success
+    whose map (and basis) are the files the record names. None when there is none;
+    DamagedEntry when it cannot be used."""
     record_path, map_path, basis_path = shape_files(i)
-    if os.path.isfile(record_path):
-        with open(record_path) as f:
-            record = json.load(f)
-        if record["status"] != "ok" or (os.path.isfile(map_path) and
-                                        (not SHAPE_PARAMETERS["basis"] or os.path.isfile(basis_path))):
-            record["cached"] = True
-            return record
+    record = load_record(record_path)
+    if record is None:
+        return None
+    require(record, record_path, status=str, error=str, vertices=int, energies=list, seconds=NUMBER, rank=int)
+    if record["status"] == "failed":
+        return record
+    if record["status"] != "ok" or not record["energies"] or \
+            not all(isinstance(e, NUMBER) for e in record["energies"]):
+        raise DamagedEntry(f"{record_path}: the record's status or energies are malformed")
+    require(record, record_path, files=dict)
+    require_file(map_path, record["files"].get("map"), "centered map")
+    if SHAPE_PARAMETERS["basis"]:
+        require(record, record_path, basis=dict)
+        basis = record["basis"]
+        if not (isinstance(basis.get("eigenvalues"), list) and len(basis["eigenvalues"]) == BASIS_SIZE
+                and isinstance(basis.get("mesh"), str)):
+            raise DamagedEntry(f"{record_path}: the record's basis is malformed")
+        require_file(basis_path, record["files"].get("basis"), "eigenbasis")
+    return record
+
+
+def compute_shape(i):
+    """Maps shape i and caches it; its record."""
+    record_path, map_path, basis_path = shape_files(i)
     begin = time.perf_counter()
     errors = FilterMessages()
     reader = errors.watch(vtkSurfaceMeshReader())
@@ -297,7 +473,8 @@ def map_shape(i):
     else:
         energies = grid.GetOutput().GetFieldData().GetArray("DegreeEnergies")
         record.update(status="ok", vertices=center.GetOutput().GetNumberOfPoints(),
-                      energies=[energies.GetValue(l) for l in range(min(DESCRIPTOR_DEGREES, energies.GetNumberOfValues()))])
+                      energies=[energies.GetValue(l) for l in range(min(DESCRIPTOR_DEGREES, energies.GetNumberOfValues()))],
+                      files={})
         if SHAPE_PARAMETERS["basis"]:
             basis_begin = time.perf_counter()
             basis = errors.watch(vtkLaplaceBeltramiBasis())
@@ -309,7 +486,7 @@ def map_shape(i):
                 record.update(status="failed", error="; ".join(errors.messages))
             else:
                 fields = basis.GetOutput().GetFieldData()
-                write_array(numpy_support.vtk_to_numpy(
+                record["files"]["basis"] = write_array(numpy_support.vtk_to_numpy(
                     basis.GetOutput().GetPointData().GetArray("LaplaceBeltramiBasis")), basis_path)
                 eigenvalues = fields.GetArray("LaplaceBeltramiEigenvalues")
                 # Python's float repr round-trips: the eigenvalues come back to the last bit.
@@ -317,12 +494,48 @@ def map_shape(i):
                     "eigenvalues": [eigenvalues.GetValue(j) for j in range(eigenvalues.GetNumberOfValues())],
                     "mesh": fields.GetAbstractArray("LaplaceBeltramiBasisMesh").GetValue(0)}
         if record["status"] == "ok":
-            write_polydata(center.GetOutput(), map_path)
+            record["files"]["map"] = write_polydata(center.GetOutput(), map_path)
     record["seconds"] = time.perf_counter() - begin
     record["basis_seconds"] = basis_seconds
-    write_json_atomically(record_path, record)
-    record["cached"] = False
+    write_json(record_path, record)
     return record
+
+
+def cached_or_computed(read_cache, compute, record_path, failure):
+    """The record read_cache() finds, else compute()'s; an entry that cannot be used is
+    reported and computed again. What cannot be computed or cached becomes failure(reason),
+    never an exception: the other shapes and pairs go on."""
+    damaged = []
+    try:
+        record = read_cache()
+        if record is not None:
+            record["cached"] = True
+            return record
+    except DamagedEntry as entry:
+        warn(f"cache entry {entry}: computing it again")
+        damaged.append(record_path)
+    begin = time.perf_counter()
+    try:
+        record = compute()
+    except OSError as error:
+        record = failure(f"cannot cache the result ({os_error_text(error)})")
+        record["seconds"] = time.perf_counter() - begin
+    except Exception as error:  # a failure of this shape or pair, not of the run
+        record = failure(f"{type(error).__name__}: {error}")
+        record["seconds"] = time.perf_counter() - begin
+    record["cached"] = False
+    record["damaged"] = damaged
+    return record
+
+
+def map_shape(i):
+    """Shape i's record, from the cache or computed (and cached); a mesh that cannot be read
+    or mapped gives a failed record."""
+    def failure(reason):
+        return {"status": "failed", "error": reason, "vertices": 0, "energies": [], "rank": rank, "seconds": 0.0}
+    if keys[i] is None:
+        return dict(failure(keyed[i][1]), cached=False)
+    return cached_or_computed(lambda: cached_shape(i), lambda: compute_shape(i), shape_files(i)[0], failure)
 
 
 sizes = [os.path.getsize(p) for p in meshes]
@@ -356,6 +569,28 @@ else:
     pairs = sorted(chosen)
 
 
+def map_path_of(pair):
+    return os.path.join(args.output, "maps", f"{names[pair[0]]}-to-{names[pair[1]]}.vtp")
+
+
+def colliding_maps():
+    """Two pairs whose maps would be one file (shapes a-to-b and c, a and b-to-c): the
+    reason the run stops, else ""."""
+    written = {}
+    for pair in pairs:
+        path = map_path_of(pair)
+        if path in written:
+            first = written[path]
+            return (f"--write-maps: the pairs {names[first[0]]} -> {names[first[1]]} and "
+                    f"{names[pair[0]]} -> {names[pair[1]]} would both write {path}; rename one of the files")
+        written[path] = pair
+    return ""
+
+
+if args.write_maps and colliding_maps():
+    fail(colliding_maps())
+
+
 def pair_key(pair):
     return digest(keys[pair[0]].encode(), keys[pair[1]].encode(), PAIR_PARAMETERS)
 
@@ -378,15 +613,37 @@ def attach_basis(data, i):
     data.GetFieldData().AddArray(mesh)
 
 
-def register_pair(p):
+PAIR_NUMBERS = ("determinant", "correlation_score", "correlation_coefficient", "registration_error",
+                "orthogonality_residual", "distance", "seconds")
+
+
+def cached_pair(p):
+    """Pair p's cached record when the entry is whole (and, with --write-maps, its map is the
+    file the record names); None when there is none or the map is missing; DamagedEntry when
+    it cannot be used."""
+    record_path = os.path.join(cache, "pairs", pair_key(pairs[p]) + ".json")
+    record = load_record(record_path)
+    if record is None:
+        return None
+    require(record, record_path, status=str, transform=list, stored_bases=int, rank=int,
+            **{name: NUMBER for name in PAIR_NUMBERS})
+    if record["status"] != "ok" or len(record["transform"]) != 9 or \
+            not all(isinstance(v, NUMBER) for v in record["transform"]):
+        raise DamagedEntry(f"{record_path}: the record's status or transform are malformed")
+    if args.write_maps:
+        map_path = map_path_of(pairs[p])
+        if not os.path.lexists(map_path):
+            return None  # maps asked for the first time: the pair is computed again
+        # The file a pair of other shapes with the same names wrote, or a damaged one, is
+        # not this pair's map.
+        require_file(map_path, record.get("map"), "map")
+    return record
+
+
+def compute_pair(p):
+    """Registers pair p and caches the result; its record."""
     source, target = pairs[p]
     record_path = os.path.join(cache, "pairs", pair_key(pairs[p]) + ".json")
-    map_path = os.path.join(args.output, "maps", f"{names[source]}-to-{names[target]}.vtp")
-    if os.path.isfile(record_path) and (not args.write_maps or os.path.isfile(map_path)):
-        with open(record_path) as f:
-            record = json.load(f)
-        record["cached"] = True
-        return record
     begin = time.perf_counter()
     errors = FilterMessages()
     source_map = read_polydata(shape_files(source)[1])
@@ -426,12 +683,18 @@ def register_pair(p):
             stored_bases=int(sum(field_value(result, "RefinementStoredBasisUsed", k) == 1 for k in range(2))),
             distance=math.sqrt(max(0.0, (1.0 - rho) / 2.0)))
         if args.write_maps:
-            write_polydata(result, map_path)
+            record["map"] = write_polydata(result, map_path_of(pairs[p]))
     record["seconds"] = time.perf_counter() - begin
     if record["status"] == "ok":
-        write_json_atomically(record_path, record)
-    record["cached"] = False
+        write_json(record_path, record)
     return record
+
+
+def register_pair(p):
+    """Pair p's record, from the cache or computed (and cached)."""
+    return cached_or_computed(lambda: cached_pair(p), lambda: compute_pair(p),
+                              os.path.join(cache, "pairs", pair_key(pairs[p]) + ".json"),
+                              lambda reason: {"status": "failed", "error": reason, "rank": rank})
 
 
 vertices = [shapes[i]["vertices"] for i in range(len(meshes))]
@@ -480,7 +743,7 @@ def write_heat_map(distances, labels, path):
     axes.set_title("registration distance (black: not registered)", fontsize=9)
     figure.colorbar(shown, ax=axes, fraction=0.046, pad=0.04, label="d = sqrt((1 - correlation) / 2)")
     figure.tight_layout()
-    figure.savefig(path, dpi=100)
+    write_atomically(path, lambda temporary: figure.savefig(temporary, dpi=100, format="png"))
     pyplot.close(figure)
 
 
@@ -509,38 +772,39 @@ def write_heat_map_pixels(distances, path, cell=24):
                 color = tuple(int(255 * c) for c in rgb)
             colors.SetTuple3(y * n * cell + x, *color)
     image.GetPointData().SetScalars(colors)
-    writer = vtkPNGWriter()
-    writer.SetInputData(image)
-    writer.SetFileName(path)
-    writer.Write()
+    def write(temporary):
+        writer = vtkPNGWriter()
+        writer.SetInputData(image)
+        writer.SetFileName(temporary)
+        if writer.Write() != 1:
+            raise OSError(f"{path}: cannot write the picture")
+    write_atomically(path, write)
 
 
-pair_failures = sum(1 for r in results.values() if r["status"] != "ok")
-shape_failures = len(meshes) - len(ok)
-if rank == 0:
-    with open(os.path.join(args.output, "shapes.csv"), "w", newline="") as f:
-        table = csv.writer(f)
-        table.writerow(["shape", "file", "sha256_key", "vertices", "status", "error", "seconds", "rank", "cached"])
-        for i, path in enumerate(meshes):
-            s = shapes[i]
-            table.writerow([names[i], path, keys[i][:16], s["vertices"], s["status"], s["error"],
-                            f"{s['seconds']:.3f}", s["rank"], int(s["cached"])])
-    with open(os.path.join(args.output, "pairs.csv"), "w", newline="") as f:
-        table = csv.writer(f)
-        table.writerow(["source", "target", "status", "transform", "determinant", "correlation_score",
-                        "correlation_coefficient", "registration_error", "orthogonality_residual",
-                        "distance", "error", "seconds", "rank", "cached"])
-        for p in sorted(range(len(pairs)), key=lambda p: (names[pairs[p][0]], names[pairs[p][1]])):
-            r, (s, t) = results[p], pairs[p]
-            if r["status"] == "ok":
-                numbers = [" ".join(f"{v:.6f}" for v in r["transform"]), f"{r['determinant']:.0f}",
-                           f"{r['correlation_score']:.6g}", f"{r['correlation_coefficient']:.6f}",
-                           f"{r['registration_error']:.6g}", f"{r['orthogonality_residual']:.6g}",
-                           f"{r['distance']:.6f}"]
-            else:
-                numbers = [""] * 7
-            table.writerow([names[s], names[t], r["status"], *numbers, r["error"], f"{r['seconds']:.3f}",
-                            r["rank"], int(r["cached"])])
+def write_tables():
+    """shapes.csv, pairs.csv, distances.csv and .png, run.json; OSError when one cannot be
+    written."""
+    rows = [["shape", "file", "sha256_key", "vertices", "status", "error", "seconds", "rank", "cached"]]
+    for i, path in enumerate(meshes):
+        s = shapes[i]
+        rows.append([names[i], path, (keys[i] or "")[:16], s["vertices"], s["status"], s["error"],
+                     f"{s['seconds']:.3f}", s["rank"], int(s["cached"])])
+    write_table(os.path.join(args.output, "shapes.csv"), rows)
+    rows = [["source", "target", "status", "transform", "determinant", "correlation_score",
+             "correlation_coefficient", "registration_error", "orthogonality_residual",
+             "distance", "error", "seconds", "rank", "cached"]]
+    for p in sorted(range(len(pairs)), key=lambda p: (names[pairs[p][0]], names[pairs[p][1]])):
+        r, (s, t) = results[p], pairs[p]
+        if r["status"] == "ok":
+            numbers = [" ".join(f"{v:.6f}" for v in r["transform"]), f"{r['determinant']:.0f}",
+                       f"{r['correlation_score']:.6g}", f"{r['correlation_coefficient']:.6f}",
+                       f"{r['registration_error']:.6g}", f"{r['orthogonality_residual']:.6g}",
+                       f"{r['distance']:.6f}"]
+        else:
+            numbers = [""] * 7
+        rows.append([names[s], names[t], r["status"], *numbers, r["error"], f"{r['seconds']:.3f}",
+                     r["rank"], int(r["cached"])])
+    write_table(os.path.join(args.output, "pairs.csv"), rows)
     matrix = numpy.full((len(ok), len(ok)), numpy.nan)
     numpy.fill_diagonal(matrix, 0.0)
     where = {shape: k for k, shape in enumerate(ok)}
@@ -549,13 +813,19 @@ if rank == 0:
             matrix[where[s], where[t]] = matrix[where[t], where[s]] = results[p]["distance"]
     order = cluster_order(matrix)
     ordered = matrix[numpy.ix_(order, order)]
-    with open(os.path.join(args.output, "distances.csv"), "w", newline="") as f:
-        table = csv.writer(f)
-        table.writerow(["shape"] + [names[ok[k]] for k in order])
-        for row, k in enumerate(order):
-            table.writerow([names[ok[k]]] + ["" if numpy.isnan(v) else f"{v:.6f}" for v in ordered[row]])
+    rows = [["shape"] + [names[ok[k]] for k in order]]
+    for row, k in enumerate(order):
+        rows.append([names[ok[k]]] + ["" if numpy.isnan(v) else f"{v:.6f}" for v in ordered[row]])
+    write_table(os.path.join(args.output, "distances.csv"), rows)
     if len(ok) > 0:
         write_heat_map(ordered.tolist(), [names[ok[k]] for k in order], os.path.join(args.output, "distances.png"))
+    write_json(os.path.join(args.output, "run.json"), summary)
+
+
+pair_failures = sum(1 for r in results.values() if r["status"] != "ok")
+shape_failures = len(meshes) - len(ok)
+tables_written = True
+if rank == 0:
     seconds = time.perf_counter() - started
     summary = {
         "ranks": size, "threads_per_rank": threads_per_rank, "seconds": seconds, "mode": args.mode,
@@ -567,8 +837,14 @@ if rank == 0:
         "basis_seconds": sum(s.get("basis_seconds", 0.0) for s in shapes.values() if not s["cached"]),
         "pairs_with_stored_bases": sum(1 for r in results.values() if not r["cached"] and r.get("stored_bases") == 2),
         "pair_seconds": sum(r["seconds"] for r in results.values() if not r["cached"]),
+        "damaged_cache_entries": sorted(path for r in [*shapes.values(), *results.values()]
+                                        for path in r.get("damaged", [])),
     }
-    write_json_atomically(os.path.join(args.output, "run.json"), summary)
+    try:
+        write_tables()
+    except OSError as error:
+        tables_written = False
+        print(f"register_collection: cannot write the tables ({os_error_text(error)})", file=sys.stderr)
     print(f"{len(ok)} of {len(meshes)} shapes mapped ({summary['shapes_computed']} computed), "
           f"{len(pairs) - pair_failures} of {len(pairs)} pairs registered ({summary['pairs_computed']} computed) "
           f"on {size} ranks x {'/'.join(map(str, sorted(set(threads_per_rank))))} threads in {seconds:.1f} s; "
@@ -576,10 +852,13 @@ if rank == 0:
     for i in range(len(meshes)):
         if shapes[i]["status"] != "ok":
             print(f"{meshes[i]}: {shapes[i]['error']}", file=sys.stderr)
+tables_written = comm.bcast(tables_written, root=0) if comm else tables_written
 # Every rank waits for rank 0's tables: a rank leaving early with a failure status would make
 # mpiexec kill rank 0 while it still writes them.
 if comm:
     comm.Barrier()
+if not tables_written:
+    sys.exit(1)
 if shape_failures + pair_failures > args.max_failures:
     if rank == 0:
         print(f"{shape_failures + pair_failures} failures, more than --max-failures {args.max_failures}",

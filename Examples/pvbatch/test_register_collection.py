@@ -2,8 +2,10 @@
 each) as on one process (a thread per core), the threads of each rank in run.json, a failing
 mesh recorded without stopping the others, the cache (a rerun computes nothing; pairs refined
 again from cached shapes, with their stored eigenbases, come out as in the cold run; a
-byte-identical copy is recognized; a new mesh computes only itself and its pairs), and the
-nearest mode.
+byte-identical copy is recognized; a new mesh computes only itself and its pairs), the
+nearest mode, and what a run meets in the wild: a damaged cache (each entry computed again,
+with a warning naming it), an unreadable mesh, an output that cannot be written, a read-only
+cache, map names that would collide.
 
 Usage: python3 test_register_collection.py MPIEXEC PVBATCH PLUGIN DRIVER MESH_DIR SCRATCH
 """
@@ -51,11 +53,16 @@ def check(condition, message):
         print("FAILED:", message)
 
 
-def run(ranks, output, *extra, meshes=meshes):
+def run(ranks, output, *extra, meshes=meshes, user=None):
+    """The driver on `ranks` ranks; `user`: a uid and HOME to run it as (see unprivileged)."""
     command = ([mpiexec, "--oversubscribe", "-n", str(ranks)] if ranks > 1 else []) + [pvbatch]
     command += ["--mpi", "--symmetric"] if ranks > 1 else []
     command += [driver, "--plugin", plugin, "--output", output, "--resolution", "64", *extra, *meshes]
-    done = subprocess.run(command, capture_output=True, text=True, timeout=900)
+    environment = None
+    if user:
+        command = ["setpriv", f"--reuid={user[0]}", f"--regid={user[0]}", "--clear-groups"] + command
+        environment = dict(os.environ, HOME=user[1])
+    done = subprocess.run(command, capture_output=True, text=True, timeout=900, env=environment)
     print(" ".join(command), "->", done.returncode, done.stdout.strip(), done.stderr.strip()[-600:], sep="\n")
     return done
 
@@ -176,6 +183,174 @@ check(len(pairs) <= 5, "nearest mode registers at most one pair per shape")
 done = run(1, os.path.join(scratch, "refused"), "--resolution", "6")
 check(done.returncode == 2 and "--resolution needs an even integer, at least 8, not 6" in done.stderr,
       f"--resolution 6 refused as mobius-register refuses it: {done.returncode} {done.stderr!r}")
+
+
+# 5. What a run meets in the wild. Every case ends in a result or one clear line, never a
+#    Python traceback.
+def no_traceback(done, label):
+    check("Traceback" not in done.stderr, f"{label}: a traceback: {done.stderr[-800:]!r}")
+
+
+wild = os.path.join(scratch, "wild")
+small = meshes[:2]  # hand and cow: one pair, refined with stored bases
+clean = os.path.join(wild, "clean")
+done = run(1, clean, "--write-maps", meshes=small)
+check(done.returncode == 0, "the clean run for the damage cases")
+clean_pairs = table(os.path.join(clean, "pairs.csv"))
+
+
+def entries(output, folder, suffix):
+    return sorted(os.path.join(output, "cache", folder, f) for f in os.listdir(os.path.join(output, "cache", folder))
+                  if f.endswith(suffix))
+
+
+def cut(path, keep=None, text=None):
+    """The file cut to `keep` bytes (half when None), or replaced by `text`."""
+    if text is not None:
+        with open(path, "w") as f:
+            f.write(text)
+        return
+    size = os.path.getsize(path)
+    with open(path, "r+b") as f:
+        f.truncate(size // 2 if keep is None else keep)
+
+
+# 5a. A damaged cache entry, each kind alone: computed again with a warning naming it, the
+#     same table as from a whole cache (it used to end every later run in a traceback:
+#     JSONDecodeError, "mmap length is greater than file size"; a damaged centered map made its
+#     pairs fail on every rerun).
+damages = {
+    "shape record cut short": ("shapes", ".json", dict()),
+    "shape record emptied": ("shapes", ".json", dict(keep=0)),
+    "shape record of another kind": ("shapes", ".json", dict(text="[]")),
+    "centered map cut short": ("shapes", ".vtp", dict()),
+    "eigenbasis cut short": ("shapes", ".basis.npy", dict()),
+    "pair record cut short": ("pairs", ".json", dict()),
+    "pair record of another kind": ("pairs", ".json", dict(text="[]")),
+    "pair record without its fields": ("pairs", ".json", dict(text='{"status": "ok"}')),
+}
+for number, (label, (folder, suffix, how)) in enumerate(damages.items()):
+    damaged = os.path.join(wild, f"damaged{number}")
+    shutil.copytree(clean, damaged)
+    entry = entries(damaged, folder, suffix)[0]
+    cut(entry, **how)
+    done = run(1, damaged, "--write-maps", meshes=small)
+    no_traceback(done, label)
+    record = os.path.join(os.path.dirname(entry), os.path.basename(entry).split(".")[0] + ".json")
+    check(done.returncode == 0 and f"cache entry {entry}" in done.stderr and "computing it again" in done.stderr,
+          f"{label}: no warning naming {entry}: {done.returncode} {done.stderr[-600:]!r}")
+    if done.returncode == 0:
+        named = run_summary(damaged).get("damaged_cache_entries")
+        check(named == [record], f"{label}: run.json names {named}, not {record}")
+        check(same_pairs(clean_pairs, table(os.path.join(damaged, "pairs.csv"))), f"{label}: other results")
+        again = run(1, damaged, "--write-maps", meshes=small)
+        check(again.returncode == 0 and "warning" not in again.stderr and
+              run_summary(damaged)["pairs_computed"] == 0, f"{label}: the rerun is not wholly cached")
+    check(not [f for _, _, files in os.walk(damaged) for f in files if f.endswith(".partial")],
+          f"{label}: temporary files left")
+
+# 5b. A map of the same name that another pair wrote (shapes named a-to-b and c, then a and
+#     b-to-c, in two runs on one output) is not this pair's map: a rerun computed it again
+#     instead of taking it for its own. Within one run the two names are refused.
+named = os.path.join(wild, "names")
+os.makedirs(named)
+for name, mesh in (("a-to-b", 0), ("c", 1), ("a", 1), ("b-to-c", 0)):
+    shutil.copyfile(meshes[mesh], os.path.join(named, name + ".off"))
+colliding = [os.path.join(named, n + ".off") for n in ("a-to-b", "c", "a", "b-to-c")]
+done = run(1, os.path.join(wild, "collide"), "--write-maps", "--refine", "none", meshes=colliding)
+no_traceback(done, "colliding map names")
+check(done.returncode == 2 and "would both write" in done.stderr and "a-to-b-to-c.vtp" in done.stderr,
+      f"colliding map names in one run not refused: {done.returncode} {done.stderr[-400:]!r}")
+shared = os.path.join(wild, "shared")
+for group in (colliding[:2], colliding[2:], colliding[:2]):
+    done = run(1, shared, "--write-maps", "--refine", "none", "--mode", "all", meshes=group)
+check(done.returncode == 0 and "maps/a-to-b-to-c.vtp" in done.stderr and "computing it again" in done.stderr
+      and run_summary(shared)["pairs_computed"] == 1,
+      f"another pair's map taken for this pair's: {done.returncode} {done.stderr[-500:]!r}")
+
+# 5c. Shapes named after their files: a name two files share gets -2 (a third file named
+#     hand-2 keeps its own name).
+twins = os.path.join(wild, "twins")
+for folder in ("one", "two"):
+    os.makedirs(os.path.join(twins, folder))
+    shutil.copyfile(meshes[0], os.path.join(twins, folder, "hand.off"))
+shutil.copyfile(meshes[1], os.path.join(twins, "hand-2.off"))
+done = run(1, os.path.join(wild, "twins-out"), "--refine", "none", "--write-maps",
+           meshes=[os.path.join(twins, f) for f in ("one/hand.off", "two/hand.off", "hand-2.off")])
+shapes = [row["shape"] for row in table(os.path.join(wild, "twins-out", "shapes.csv"))] if done.returncode == 0 else []
+check(done.returncode == 0 and shapes == ["hand", "hand-3", "hand-2"], f"names of same-named files: {shapes}")
+
+# batch_register.py names its outputs by the meshes' file names: two files of one name were
+# written to one output; they are refused.
+batch = subprocess.run([pvbatch, os.path.join(os.path.dirname(driver), "batch_register.py"), "--plugin", plugin,
+                        "--template", meshes[1], "--output", os.path.join(wild, "batch"), "--resolution", "64",
+                        os.path.join(twins, "one", "hand.off"), os.path.join(twins, "two", "hand.off")],
+                       capture_output=True, text=True, timeout=600)
+check(batch.returncode == 2 and "would both write" in batch.stderr and "hand-to-template.vtp" in batch.stderr,
+      f"batch_register.py with two files of one name: {batch.returncode} {batch.stderr[-400:]!r}")
+
+# 5d. Permissions: an unreadable mesh fails alone (it stopped the whole collection with a
+#     traceback), a read-only cache with new work fails that work with a message, an output
+#     folder that cannot be written stops the run before any work (status 2). As root,
+#     permissions do not hold: those runs are an unprivileged user's (setpriv).
+def unprivileged(folder):
+    """A uid to run as and a HOME for it, or None when this process is not root."""
+    if os.geteuid() != 0:
+        return None
+    home = os.path.join(folder, "home")
+    os.makedirs(home, exist_ok=True)
+    os.chown(home, 65534, 65534)
+    return 65534, home
+
+
+def owned_by_user(path, user):
+    if user:
+        for folder, _, files in os.walk(path):
+            for name in [folder] + [os.path.join(folder, f) for f in files]:
+                os.chown(name, user[0], user[0])
+
+
+user = unprivileged(wild)
+secret = os.path.join(wild, "secret.off")
+shutil.copyfile(meshes[3], secret)
+os.chmod(secret, 0)
+readable = os.path.join(wild, "readable")
+os.makedirs(readable)
+owned_by_user(readable, user)
+done = run(1, readable, "--refine", "none", meshes=small + [secret], user=user)
+no_traceback(done, "unreadable mesh")
+rows = {row["shape"]: row for row in table(os.path.join(readable, "shapes.csv"))} \
+    if os.path.exists(os.path.join(readable, "shapes.csv")) else {}
+check(done.returncode == 1 and rows.get("secret", {}).get("error") == "cannot read the file (Permission denied)"
+      and rows["hand"]["status"] == rows["cow"]["status"] == "ok" and len(table(os.path.join(readable, "pairs.csv"))) == 1,
+      f"an unreadable mesh stops the others: {done.returncode} {done.stderr[-400:]!r} {rows}")
+
+locked = os.path.join(wild, "locked")
+shutil.copytree(clean, locked)
+owned_by_user(locked, user)
+for folder in ("shapes", "pairs"):
+    path = os.path.join(locked, "cache", folder)
+    if user:
+        os.chown(path, 0, 0)
+    os.chmod(path, 0o555)
+done = run(1, locked, "--write-maps", meshes=small + [meshes[2]], user=user)
+no_traceback(done, "read-only cache")
+rows = {row["shape"]: row for row in table(os.path.join(locked, "shapes.csv"))} \
+    if os.path.exists(os.path.join(locked, "shapes.csv")) else {}
+check(done.returncode == 1 and "cannot cache the result" in rows.get("bull", {}).get("error", "")
+      and os.path.join(locked, "cache", "shapes") + ": Permission denied" in rows["bull"]["error"]
+      and rows["hand"]["cached"] == "1", f"a read-only cache with new work: {done.returncode} {done.stderr[-400:]!r}")
+
+a_file = os.path.join(wild, "a-file")
+open(a_file, "w").close()
+for output, label, as_user in ((a_file, "an output that is a file", None),
+                               (os.path.join(a_file, "below"), "an output below a file", None),
+                               (wild if user else "/proc/results", "an output that cannot be written", user)):
+    done = run(1, output, "--refine", "none", meshes=small, user=as_user)
+    no_traceback(done, label)
+    lines = done.stderr.strip().splitlines()
+    check(done.returncode == 2 and len(lines) == 1 and f"--output {output}: cannot write the results there" in lines[0],
+          f"{label}: {done.returncode} {done.stderr[-400:]!r}")
 
 print("PASSED" if not failures else f"{len(failures)} checks failed")
 sys.exit(1 if failures else 0)
