@@ -1,5 +1,7 @@
 #include "JsonSummary.h"
 
+#include "TextFormats.h"
+
 #include "vtkFieldData.h"
 #include "vtkStringArray.h"
 
@@ -9,71 +11,6 @@
 
 namespace
 {
-// The length of the valid UTF-8 sequence starting at text[at], 0 if there is none there
-// (a stray continuation byte, a sequence cut short, an overlong form, a surrogate).
-std::size_t Utf8SequenceLength(const std::string& text, std::size_t at)
-{
-  const auto byte = [&text](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-  const unsigned char lead = byte(at);
-  const std::size_t length = lead < 0x80 ? 1 : lead >= 0xC2 && lead <= 0xDF ? 2
-    : lead >= 0xE0 && lead <= 0xEF                                          ? 3
-    : lead >= 0xF0 && lead <= 0xF4                                          ? 4
-                                                                            : 0;
-  if (length == 0 || at + length > text.size())
-  {
-    return 0;
-  }
-  for (std::size_t k = 1; k < length; ++k)
-  {
-    if ((byte(at + k) & 0xC0) != 0x80)
-    {
-      return 0;
-    }
-  }
-  const unsigned char second = length > 1 ? byte(at + 1) : 0;
-  if ((lead == 0xE0 && second < 0xA0) || (lead == 0xED && second >= 0xA0) ||
-    (lead == 0xF0 && second < 0x90) || (lead == 0xF4 && second >= 0x90))
-  {
-    return 0;
-  }
-  return length;
-}
-
-// A JSON string. A file name is bytes, not necessarily UTF-8: a byte that is not part of
-// valid UTF-8 becomes U+FFFD, so that the summary stays valid JSON.
-std::string Quoted(const std::string& text)
-{
-  std::string out = "\"";
-  for (std::size_t at = 0; at < text.size();)
-  {
-    const char c = text[at];
-    const std::size_t length = Utf8SequenceLength(text, at);
-    if (length == 0)
-    {
-      out += "\\ufffd";
-      ++at;
-      continue;
-    }
-    if (c == '"' || c == '\\')
-    {
-      out += '\\';
-      out += c;
-    }
-    else if (static_cast<unsigned char>(c) < 0x20)
-    {
-      char escaped[8];
-      std::snprintf(escaped, sizeof(escaped), "\\u%04x", c);
-      out += escaped;
-    }
-    else
-    {
-      out.append(text, at, length);
-    }
-    at += length;
-  }
-  return out + "\"";
-}
-
 // JSON has no NaN: absent figures are null.
 std::string Number(double value)
 {
@@ -177,7 +114,7 @@ std::string StageTimes(const PipelineResult& result)
   double total = 0;
   for (size_t s = 0; s < stages.size(); ++s)
   {
-    json << (s ? ", " : "") << "{\"name\": " << Quoted(stages[s].Name)
+    json << (s ? ", " : "") << "{\"name\": " << JsonString(stages[s].Name)
          << ", \"seconds\": " << Number(stages[s].Seconds) << "}";
     total += stages[s].Seconds;
   }
@@ -194,7 +131,7 @@ std::string Repairs(vtkPolyData* map)
   auto phrases = vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("MeshRepairs"));
   for (vtkIdType k = 0; phrases && k < phrases->GetNumberOfValues(); ++k)
   {
-    out << (k ? ", " : "") << Quoted(phrases->GetValue(k));
+    out << (k ? ", " : "") << JsonString(phrases->GetValue(k));
   }
   out << "], \"removed_triangles\": " << Number(FieldValue(map, "RemovedTriangles"))
       << ", \"split_vertices\": " << Number(FieldValue(map, "SplitNonManifoldVertices"))
@@ -237,13 +174,13 @@ std::string MapQuality(vtkPolyData* map, vtkPolyData* centered)
     vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("DegenerateMapReason"));
   out << ", \"degenerate\": "
       << (FieldValue(map, "DegenerateMap") == 1 && reason && reason->GetNumberOfValues() > 0
-             ? Quoted(reason->GetValue(0))
+             ? JsonString(reason->GetValue(0))
              : std::string("null"));
   // null, or what the user should know about a usable map (a squashed share of the surface).
   auto warning = vtkStringArray::SafeDownCast(map->GetFieldData()->GetAbstractArray("MapWarning"));
   out << ", \"warning\": "
       << (warning && warning->GetNumberOfValues() > 0 && !warning->GetValue(0).empty()
-             ? Quoted(warning->GetValue(0))
+             ? JsonString(warning->GetValue(0))
              : std::string("null"))
       << "}";
   return out.str();
@@ -255,7 +192,7 @@ std::string JsonSummary(const std::string& source, const std::string& target,
   double demoError)
 {
   std::ostringstream json;
-  json << "{\n  \"source\": " << Quoted(source) << ",\n  \"target\": " << Quoted(target)
+  json << "{\n  \"source\": " << JsonString(source) << ",\n  \"target\": " << JsonString(target)
        << ",\n  \"rotation\": " << Array(result.Aligned, "Rotation", 9)
        << ",\n  \"determinant\": " << Number(FieldValue(result.Aligned, "Determinant"))
        << ",\n  \"euler_angles_zyz\": " << Array(result.Aligned, "EulerAngles", 3)
@@ -281,8 +218,8 @@ std::string JsonSummary(const std::string& source, const std::string& target,
        << ",\n  \"refinement\": " << Refinement(result.Correspondence, result.Correspondence != result.MobiusCorrespondence)
        << ",\n  \"landmarks\": " << Landmarks(options, result.Correspondence)
        << ",\n  " << StageTimes(result) << ",\n  \"outputs\": {\"mesh\": "
-       << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath)
-       << ", \"picture\": " << (outputs.PicturePath.empty() ? "null" : Quoted(outputs.PicturePath))
+       << JsonString(outputs.MeshPath) << ", \"csv\": " << JsonString(outputs.CsvPath)
+       << ", \"picture\": " << (outputs.PicturePath.empty() ? "null" : JsonString(outputs.PicturePath))
        << "}";
   if (std::isfinite(demoError))
   {
@@ -297,7 +234,7 @@ std::string SymmetryJsonSummary(
 {
   vtkPolyData* symmetry = result.Correspondence;
   std::ostringstream json;
-  json << "{\n  \"mesh\": " << Quoted(mesh)
+  json << "{\n  \"mesh\": " << JsonString(mesh)
        << ",\n  \"symmetry_distance\": " << Number(FieldValue(symmetry, "SymmetryDistance"))
        << ",\n  \"centered\": " << (FieldValue(symmetry, "SymmetryCentered") == 1 ? "true" : "false")
        << ",\n  \"reflection\": " << Array(symmetry, "Reflection", 9)
@@ -329,7 +266,7 @@ std::string SymmetryJsonSummary(
   json << "],\n  \"map\": " << MapQuality(result.SourceMap, symmetry)
        << ",\n  \"refinement\": " << Refinement(symmetry, FieldValue(symmetry, "SymmetryRefined") == 1)
        << ",\n  " << StageTimes(result) << ",\n  \"outputs\": {\"mesh\": "
-       << Quoted(outputs.MeshPath) << ", \"csv\": " << Quoted(outputs.CsvPath) << "}\n}\n";
+       << JsonString(outputs.MeshPath) << ", \"csv\": " << JsonString(outputs.CsvPath) << "}\n}\n";
   return json.str();
 }
 
@@ -338,7 +275,7 @@ std::string OrbifoldJsonSummary(
 {
   vtkPolyData* map = result.Correspondence;
   std::ostringstream json;
-  json << "{\n  \"mesh\": " << Quoted(mesh)
+  json << "{\n  \"mesh\": " << JsonString(mesh)
        << ",\n  \"copies\": " << Number(FieldValue(map, "NumberOfCopies"))
        << ",\n  \"cones\": " << Array(map, "ConeIds", 2)
        << ",\n  \"symmetry_error\": " << Number(FieldValue(map, "SymmetryError"))
@@ -350,6 +287,6 @@ std::string OrbifoldJsonSummary(
        << ",\n  \"covering_flow_converged\": "
        << (FieldValue(map, "ConformalFlowConverged") == 1 ? "true" : "false")
        << ",\n  " << StageTimes(result) << ",\n  \"outputs\": {\"mesh\": "
-       << Quoted(outputs.MeshPath) << "}\n}\n";
+       << JsonString(outputs.MeshPath) << "}\n}\n";
   return json.str();
 }

@@ -1,6 +1,7 @@
 #include "Dataset.h"
 
 #include "ScoreInput.h"
+#include "TextFormats.h"
 
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -46,6 +47,19 @@ bool IsDirectory(const std::string& path)
   return stat(path.c_str(), &status) == 0 && S_ISDIR(status.st_mode);
 }
 
+bool SameFile(const std::string& a, const std::string& b)
+{
+  struct stat first, second;
+  return stat(a.c_str(), &first) == 0 && stat(b.c_str(), &second) == 0 &&
+    first.st_dev == second.st_dev && first.st_ino == second.st_ino;
+}
+
+bool IsNotRegularFile(const std::string& path)
+{
+  struct stat status;
+  return lstat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode);
+}
+
 bool Dataset::Open(const std::string& folder, std::string& error)
 {
   this->Folder = folder;
@@ -76,9 +90,11 @@ std::string Dataset::MirrorSamplesPath(const std::string& name) const
   return this->Folder + "/corres/" + name + ".sym.vts";
 }
 
-std::vector<std::string> Dataset::ShapeNames(const std::string& pattern) const
+std::vector<std::string> Dataset::ShapeNames(
+  const std::string& pattern, std::vector<std::string>& withoutSamples) const
 {
   std::vector<std::string> names;
+  withoutSamples.clear();
   DIR* directory = opendir((this->Folder + "/off").c_str());
   if (!directory)
   {
@@ -92,13 +108,14 @@ std::vector<std::string> Dataset::ShapeNames(const std::string& pattern) const
       continue;
     }
     const std::string name = file.substr(0, file.size() - 4);
-    if (fnmatch(pattern.c_str(), name.c_str(), 0) == 0 && IsFile(this->SamplesPath(name)))
+    if (fnmatch(pattern.c_str(), name.c_str(), 0) == 0)
     {
-      names.push_back(name);
+      (IsFile(this->SamplesPath(name)) ? names : withoutSamples).push_back(name);
     }
   }
   closedir(directory);
   std::sort(names.begin(), names.end());
+  std::sort(withoutSamples.begin(), withoutSamples.end());
   return names;
 }
 
@@ -155,20 +172,19 @@ bool ReadVertexSamples(const std::string& path, mobius::Index vertexCount,
     return false;
   }
   std::string line;
-  mobius::Index lineNumber = 0;
-  while (std::getline(file, line))
+  TextLines lines(file);
+  while (lines.Next(line))
   {
-    ++lineNumber;
     const std::vector<std::string> fields = Fields(line);
     if (fields.empty())
     {
       continue;
     }
     mobius::Index vertex = 0;
-    const std::string where = path + " line " + std::to_string(lineNumber) + ": ";
+    const std::string where = path + " line " + std::to_string(lines.Number()) + ": ";
     if (fields.size() != 1 || !ParseIndex(fields[0], vertex))
     {
-      error = where + "expected one vertex number (1-based), found '" + line + "'";
+      error = where + "expected one vertex number (1-based), found '" + Excerpt(line) + "'";
       return false;
     }
     if (vertex < 1 || vertex > vertexCount)
@@ -196,10 +212,9 @@ bool ReadPairList(const std::string& path, std::vector<ShapePair>& pairs, std::s
     return false;
   }
   std::string line;
-  mobius::Index lineNumber = 0;
-  while (std::getline(file, line))
+  TextLines lines(file);
+  while (lines.Next(line))
   {
-    ++lineNumber;
     std::vector<std::string> fields = Fields(line);
     if (fields.empty() || fields[0][0] == '#')
     {
@@ -207,8 +222,8 @@ bool ReadPairList(const std::string& path, std::vector<ShapePair>& pairs, std::s
     }
     if (fields.size() != 2)
     {
-      error = path + " line " + std::to_string(lineNumber) +
-        ": expected two shape names, X Y or X,Y; found '" + line + "'";
+      error = path + " line " + std::to_string(lines.Number()) +
+        ": expected two shape names, X Y or X,Y; found '" + Excerpt(line) + "'";
       return false;
     }
     for (std::string& name : fields)

@@ -34,8 +34,9 @@ public:
   bool Open(const std::string& folder, std::string& error);
 
   /// Names that have both off/NAME.off and corres/NAME.vts and match the shell pattern
-  /// (fnmatch: * ? [...]), sorted.
-  std::vector<std::string> ShapeNames(const std::string& pattern) const;
+  /// (fnmatch: * ? [...]), sorted; `withoutSamples` gets those that match but have no .vts.
+  std::vector<std::string> ShapeNames(
+    const std::string& pattern, std::vector<std::string>& withoutSamples) const;
 
   /// Reads NAME's mesh and sample files and checks them (every vertex in range, as many
   /// mirror samples as samples).
@@ -50,6 +51,13 @@ private:
 };
 
 bool IsDirectory(const std::string& path);
+
+/// Whether both paths name one existing file (links followed).
+bool SameFile(const std::string& a, const std::string& b);
+
+/// Whether something that is not a regular file (a symbolic link, a device, a folder) is at
+/// `path`: a file the program names itself is never written through it.
+bool IsNotRegularFile(const std::string& path);
 
 /// Reads a .vts file: one 1-based vertex number per line (blank lines skipped), each in
 /// 1..vertexCount; returns the 0-based vertices.

@@ -62,6 +62,12 @@ const char* const DatasetUsage =
   "  --keep-largest-component, --allow-poor-maps, --threads (also the threads of the\n"
   "  scoring)\n"
   "\n"
+  "Text inputs may start with a UTF-8 byte-order mark and end their lines with LF, CR LF or\n"
+  "CR. Two pairs whose --maps or --errors files would be one (shapes a-b and c, a and b-c)\n"
+  "are refused; --errors never writes over a --maps file, nor through a link or a device in\n"
+  "its folder; --csv quotes names that hold commas. Shapes matching --shapes without a .vts\n"
+  "file are named in a warning.\n"
+  "\n"
   "Exit status: 0 when every pair was scored; 1 for input that cannot be read or does not\n"
   "fit together (a missing file, a vertex out of range, .vts files of different lengths),\n"
   "checked for every pair before any registration runs, or when a pair failed (the table\n"
@@ -150,6 +156,10 @@ int ParseOptions(int argc, char* argv[], DatasetOptions& options)
     {
       options.AllPairs = true;
     }
+    else if (argument == "--")
+    {
+      continue; // the end of the options: nothing may follow (no positional arguments here)
+    }
     else if (argument == "--quiet")
     {
       options.Quiet = true;
@@ -196,7 +206,53 @@ int ParseOptions(int argc, char* argv[], DatasetOptions& options)
   {
     return UsageError("--all and --random exclude each other");
   }
+  // The program's outputs never go over its inputs.
+  if (!options.ErrorsFolder.empty() && !options.MapsFolder.empty() &&
+    SameFile(options.ErrorsFolder, options.MapsFolder))
+  {
+    return UsageError("--errors and --maps name the same folder: the maps would be overwritten");
+  }
+  if (!options.CsvPath.empty() && !options.PairsPath.empty() &&
+    SameFile(options.CsvPath, options.PairsPath))
+  {
+    return UsageError("--csv " + options.CsvPath + " is the --pairs file: it would be overwritten");
+  }
   return 0;
+}
+
+// "a, b, c" (the first ten, then how many more).
+std::string NameList(const std::vector<std::string>& names)
+{
+  std::string list;
+  for (size_t k = 0; k < names.size() && k < 10; ++k)
+  {
+    list += (k ? ", " : "") + names[k];
+  }
+  return names.size() > 10 ? list + " and " + std::to_string(names.size() - 10) + " more" : list;
+}
+
+// The file of a pair in the --maps and --errors folders: FOLDER/X-Y.csv.
+std::string PairFile(const std::string& folder, const ShapePair& pair)
+{
+  return folder + "/" + pair.first + "-" + pair.second + ".csv";
+}
+
+// Two different pairs whose files would be one (shapes a-b and c, a and b-c) are refused.
+bool CheckPairFileNames(
+  const std::string& folder, const std::vector<ShapePair>& pairs, std::string& error)
+{
+  std::map<std::string, ShapePair> used;
+  for (const ShapePair& pair : pairs)
+  {
+    const auto [at, added] = used.emplace(PairFile(folder, pair), pair);
+    if (!added && at->second != pair)
+    {
+      error = "the pairs " + at->second.first + " " + at->second.second + " and " + pair.first +
+        " " + pair.second + " would both use " + at->first + "; rename a shape";
+      return false;
+    }
+  }
+  return true;
 }
 
 // The pairs asked for, and every shape they name loaded and checked.
@@ -210,7 +266,14 @@ bool CollectPairs(const DatasetOptions& options, const Dataset& dataset,
   }
   if (options.AllPairs || options.RandomCount > 0)
   {
-    const std::vector<std::string> names = dataset.ShapeNames(options.ShapePattern);
+    std::vector<std::string> withoutSamples;
+    const std::vector<std::string> names = dataset.ShapeNames(options.ShapePattern, withoutSamples);
+    if (!withoutSamples.empty())
+    {
+      std::cerr << Program << ": warning: " << withoutSamples.size() << " shape(s) matching '"
+                << options.ShapePattern << "' have no " << dataset.SamplesPath("NAME")
+                << " and are left out: " << NameList(withoutSamples) << std::endl;
+    }
     if (names.size() < 2)
     {
       error = options.Folder + ": " + std::to_string(names.size()) + " shape(s) match '" +
@@ -258,6 +321,13 @@ bool CollectPairs(const DatasetOptions& options, const Dataset& dataset,
       return false;
     }
   }
+  for (const std::string* folder : { &options.MapsFolder, &options.ErrorsFolder })
+  {
+    if (!folder->empty() && !CheckPairFileNames(*folder, pairs, error))
+    {
+      return false;
+    }
+  }
   return true;
 }
 
@@ -269,8 +339,7 @@ void RunPair(
   std::vector<mobius::Index> images;
   if (!options.MapsFolder.empty())
   {
-    if (!ImagesFromCsv(options.MapsFolder + "/" + x.Name + "-" + y.Name + ".csv", x, y, images,
-          error))
+    if (!ImagesFromCsv(PairFile(options.MapsFolder, { x.Name, y.Name }), x, y, images, error))
     {
       score.Failure = error;
       return;
@@ -311,7 +380,7 @@ void RunPair(
   SampleErrors samples;
   if (!ScorePair(x, y, images, options.Pipeline.NumberOfThreads, score, samples, error) ||
     (!options.ErrorsFolder.empty() &&
-      !WriteSampleErrors(options.ErrorsFolder + "/" + x.Name + "-" + y.Name + ".csv", x, y, samples, error)))
+      !WriteSampleErrors(PairFile(options.ErrorsFolder, { x.Name, y.Name }), x, y, samples, error)))
   {
     score.Failure = error;
   }
@@ -320,7 +389,7 @@ void RunPair(
 
 bool IsDatasetScore(int argc, char* argv[])
 {
-  for (int i = 1; i < argc; ++i)
+  for (int i = 1; i < argc && std::string(argv[i]) != "--"; ++i)
   {
     if (std::string(argv[i]) == "--dataset")
     {

@@ -3,6 +3,7 @@
 #include "ScoreInput.h"
 
 #include "PublishOutputs.h"
+#include "TextFormats.h"
 
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
@@ -197,6 +198,13 @@ bool WriteSampleErrors(const std::string& path, const DatasetShape& x, const Dat
   const SampleErrors& samples, std::string& error)
 {
   std::ostringstream csv;
+  // A file the program names itself is replaced, never written through (a link planted in
+  // the folder would send the rows anywhere).
+  if (IsNotRegularFile(path))
+  {
+    error = path + " exists and is not a regular file (a link, a device or a folder): not written";
+    return false;
+  }
   csv << "sample,source_vertex,mapped_vertex,true_vertex,error,mirror_vertex,mirror_error\n";
   csv.precision(8);
   for (size_t k = 0; k < samples.Mapped.size(); ++k)
@@ -237,19 +245,14 @@ bool WritePairCsv(const std::string& path, const std::vector<PairScore>& scores,
          "kept_candidate,candidates,orientation_agreement,unmapped_samples,geodesics,failure\n";
   for (const PairScore& s : scores)
   {
-    std::string failure = s.Failure;
-    for (char& c : failure)
-    {
-      c = c == '"' ? '\'' : c;
-    }
-    csv << s.Pair.first << ',' << s.Pair.second << ',' << Fixed(s.Error, 4) << ','
-        << Fixed(s.MirrorError, 4) << ','
+    csv << CsvField(s.Pair.first) << ',' << CsvField(s.Pair.second) << ',' << Fixed(s.Error, 4)
+        << ',' << Fixed(s.MirrorError, 4) << ','
         << (!s.Failure.empty() || std::isnan(s.MirrorError) ? "" : s.Mirrored() ? "1" : "0") << ','
         << Fixed(s.EuclideanError, 4) << ',' << Fixed(s.Seconds, 3) << ','
         << Fixed(s.ScoreSeconds, 3) << ',' << Fixed(s.KeptCandidate, 0) << ','
         << Fixed(s.Candidates, 0) << ',' << Fixed(s.OrientationAgreement, 4) << ','
         << (s.Failure.empty() ? std::to_string(s.Unmapped) : "") << ','
-        << (s.Failure.empty() ? PathKind(s.Shortened) : "") << ",\"" << failure << "\"\n";
+        << (s.Failure.empty() ? PathKind(s.Shortened) : "") << ',' << CsvField(s.Failure) << "\n";
   }
   return ReplaceFile(path, csv.str(), error);
 }

@@ -1,6 +1,7 @@
 #include "ScoreInput.h"
 
 #include "MobiusFilterMessages.h"
+#include "TextFormats.h"
 #include "vtkCellArray.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
@@ -218,7 +219,8 @@ bool ReadMap(const std::string& path, const mobius::Points& points,
     "target_vertex_1", "target_vertex_2", "barycentric_0", "barycentric_1", "barycentric_2" };
   std::array<size_t, 8> column;
   std::string line;
-  std::getline(file, line);
+  TextLines lines(file);
+  lines.Next(line);
   const std::vector<std::string> header = Fields(line);
   for (size_t k = 0; k < names.size(); ++k)
   {
@@ -231,15 +233,13 @@ bool ReadMap(const std::string& path, const mobius::Points& points,
   }
   const size_t columns = header.size();
   TriangleFinder finder(triangles);
-  mobius::Index lineNumber = 1;
-  while (std::getline(file, line))
+  while (lines.Next(line))
   {
-    ++lineNumber;
-    if (line.empty() || line == "\r")
+    if (line.empty())
     {
       continue;
     }
-    const std::string where = path + " line " + std::to_string(lineNumber) + ": ";
+    const std::string where = path + " line " + std::to_string(lines.Number()) + ": ";
     const std::vector<std::string> fields = Fields(line);
     if (fields.size() != columns)
     {

@@ -7,10 +7,12 @@
 // Run mobius-score --help.
 #include "CorrespondenceScore.h"
 #include "DatasetScore.h"
+#include "Dataset.h"
 #include "ScoreInput.h"
 
 #include "PublishOutputs.h"
 #include "StandardOutput.h"
+#include "TextFormats.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -56,14 +58,17 @@ const char* const Usage =
   "  --truth FILE        the true image of each source vertex: one line per source vertex,\n"
   "                      either a target vertex index, or a target triangle index and three\n"
   "                      barycentric weights (separated by commas or spaces); empty lines and\n"
-  "                      lines starting with # are skipped. Default: identity (source vertex i\n"
+  "                      lines starting with # are skipped (a UTF-8 byte-order mark and\n"
+  "                      CR LF or CR line ends are read too). Default: identity (source vertex i\n"
   "                      is target vertex i; the meshes must have as many vertices)\n"
   "  --json              print the figures as JSON instead of a Markdown table\n"
   "  --max-geodesic N    compute geodesic errors for at most N source vertices, an even\n"
   "                      deterministic subsample (default 0: all)\n"
   "  --errors FILE       also write per-vertex errors: source_vertex,euclidean,geodesic\n"
+  "                      (never over one of the inputs)\n"
   "  --threads N         threads for the geodesic searches (default 0: one per core)\n"
   "  -h, --help          print this help\n"
+  "  --                  the arguments after it are files, also one that starts with '-'\n"
   "\n"
   "Exit status: 0 on success, 1 for input that cannot be read or does not fit together (row\n"
   "count, index out of range), 2 for a usage error.\n";
@@ -93,17 +98,16 @@ bool ReadTruth(const std::string& path, const mobius::Points& points,
   }
   std::vector<mobius::SurfacePoint> entries; // Triangle < 0: a vertex, in Barycentric[0]
   std::string line;
-  mobius::Index lineNumber = 0;
+  TextLines lines(file);
   bool anyPoint = false;
-  while (std::getline(file, line))
+  while (lines.Next(line))
   {
-    ++lineNumber;
     const std::vector<std::string> fields = Fields(line);
     if (fields.empty() || fields[0][0] == '#')
     {
       continue;
     }
-    const std::string where = path + " line " + std::to_string(lineNumber) + ": ";
+    const std::string where = path + " line " + std::to_string(lines.Number()) + ": ";
     mobius::SurfacePoint entry;
     mobius::Index index = 0;
     if (fields.size() == 1 && ParseIndex(fields[0], index))
@@ -217,9 +221,19 @@ int ScoreMap(int argc, char* argv[])
   std::string truthPath, errorsPath;
   bool json = false;
   mobius::CorrespondenceScoreOptions options;
+  bool optionsEnded = false; // after "--" every argument is a file, "-name" included
   for (int i = 1; i < argc; ++i)
   {
     const std::string argument = argv[i];
+    if (optionsEnded || argument == "--")
+    {
+      if (optionsEnded)
+      {
+        positional.push_back(argument);
+      }
+      optionsEnded = true;
+      continue;
+    }
     auto value = [&](std::string& out) {
       if (i + 1 >= argc)
       {
@@ -363,6 +377,14 @@ int ScoreMap(int argc, char* argv[])
 
   if (!errorsPath.empty())
   {
+    for (const std::string& input : { sourcePath, targetPath, mapPath, truthPath })
+    {
+      if (!input.empty() && SameFile(errorsPath, input))
+      {
+        return Fail("--errors " + errorsPath + " is the input " + input +
+          ": it would be overwritten; choose another file");
+      }
+    }
     std::ostringstream out;
     out << "source_vertex,euclidean,geodesic\n";
     out.precision(10);
@@ -383,20 +405,11 @@ int ScoreMap(int argc, char* argv[])
 
   if (json)
   {
-    std::string truthName;
-    for (char c : truthPath.empty() ? std::string("identity") : truthPath)
-    {
-      if (c == '"' || c == '\\')
-      {
-        truthName += '\\';
-      }
-      truthName += c;
-    }
     std::cout << "{\n  \"source_vertices\": " << sourceVertices
               << ",\n  \"target_vertices\": " << points.rows()
               << ",\n  \"target_triangles\": " << triangles.rows()
               << ",\n  \"target_area\": " << Number(score.TargetArea, true)
-              << ",\n  \"truth\": \"" << truthName << "\""
+              << ",\n  \"truth\": " << JsonString(truthPath.empty() ? "identity" : truthPath)
               << ",\n  \"geodesic_method\": \"edge paths\""
               << ",\n  \"seconds\": " << Number(seconds, true) << ",\n";
     PrintJsonSummary("euclidean", score.EuclideanSummary, false);

@@ -225,6 +225,61 @@ os.remove(os.path.join(maps, "cow-swapped.csv"))
 out = expect_failure(["--pairs", "pairs.txt", "--maps", maps, "--quiet"], ["cow -> swapped", "cow-swapped.csv", "cannot open"])
 check("| cow | swapped | FAILED |" in out and "1 of 2 pairs FAILED" in out, f"a failed pair: {out}")
 
+# Text as editors write it: a byte-order mark and CR line ends in the pairs file and in a
+# .vts file (a byte-order mark was refused as "expected one vertex number").
+corres = os.path.join(data, "corres")
+with open(os.path.join(corres, "swapped.vts"), "rb") as f:
+    vts_bytes = f.read()
+with open(os.path.join(corres, "swapped.vts"), "wb") as f:
+    f.write(b"\xef\xbb\xbf" + vts_bytes.replace(b"\n", b"\r"))
+shutil.copy(os.path.join(maps, "cow-copy.csv"), os.path.join(maps, "cow-swapped.csv"))
+with open(os.path.join(work, "bom-pairs.txt"), "wb") as f:
+    f.write(b"\xef\xbb\xbfcow copy\r\ncow swapped\r\n")
+code, out, err = run("--pairs", "bom-pairs.txt", "--maps", maps, "--csv", "bom.csv")
+check(code == 0 and list(rows(os.path.join(work, "bom.csv"))) == [("cow", "copy"), ("cow", "swapped")],
+      f"a byte-order mark and CR line ends: {code} {err!r}")
+with open(os.path.join(corres, "swapped.vts"), "wb") as f:
+    f.write(vts_bytes)
+
+# The files named after two shapes: two pairs whose files would be one (shapes a-b and c, a
+# and b-c) are refused before any work, for --maps and --errors.
+for name in ("a-b", "c", "a", "b-c"):
+    shutil.copy(os.path.join(data, "off", "cow.off"), os.path.join(data, "off", name + ".off"))
+    shutil.copy(os.path.join(corres, "cow.vts"), os.path.join(corres, name + ".vts"))
+expect_failure(["--pairs", write_pairs("colliding.txt", "a-b c\na b-c\n"), "--errors", maps],
+               ["the pairs a-b c and a b-c would both use", "a-b-c.csv"])
+# --errors writes over neither a --maps file (the same folder) nor the --pairs file, and not
+# through a link or a device it finds in its folder.
+expect_failure(["--pairs", "pairs.txt", "--maps", maps, "--errors", maps], ["--errors and --maps name the same folder"], 2)
+expect_failure(["--pairs", "pairs.txt", "--maps", maps, "--csv", "pairs.txt"], ["--csv pairs.txt is the --pairs file"], 2)
+errors = os.path.join(work, "errors")
+os.makedirs(errors)
+planted = os.path.join(work, "planted.txt")
+with open(planted, "w") as f:
+    f.write("not for mobius-score\n")
+os.symlink(planted, os.path.join(errors, "cow-copy.csv"))
+out = expect_failure(["--pairs", "pairs.txt", "--maps", maps, "--errors", errors, "--quiet"],
+                     ["cow -> copy", "cow-copy.csv exists and is not a regular file", "not written"])
+check(open(planted).read() == "not for mobius-score\n", "--errors wrote through a link")
+for name in ("a-b", "c", "a", "b-c"):
+    os.remove(os.path.join(data, "off", name + ".off"))
+# A shape matching --shapes without its .vts is named, not silently left out.
+shutil.copy(os.path.join(data, "off", "cow.off"), os.path.join(data, "off", "cox.off"))
+code, out, err = run("--all", "--shapes", "co[pwx]*", "--maps", maps, "--quiet")
+check("warning: 1 shape(s) matching 'co[pwx]*' have no" in err and "corres/NAME.vts and are left out: cox" in err,
+      f"no warning of a shape without .vts: {err!r}")
+os.remove(os.path.join(data, "off", "cox.off"))
+# --csv quotes names that hold commas (two columns of the row became three).
+shutil.copy(os.path.join(data, "off", "copy.off"), os.path.join(data, "off", "co,py.off"))
+shutil.copy(os.path.join(corres, "copy.vts"), os.path.join(corres, "co,py.vts"))
+shutil.copy(os.path.join(maps, "copy-swapped.csv"), os.path.join(maps, "co,py-swapped.csv"))
+code, out, err = run("--all", "--shapes", "[cs][ow]*[ypd]", "--maps", maps, "--csv", "commas.csv", "--quiet")
+table_rows = list(rows(os.path.join(work, "commas.csv"))) if os.path.exists(os.path.join(work, "commas.csv")) else []
+check(("co,py", "swapped") in table_rows and ("co,py", "copy") in table_rows,
+      f"--csv with a comma in a shape name: {table_rows} {err!r}")
+# "--" ends the options (nothing may follow it here: no positional arguments).
+expect_failure(["--pairs", "pairs.txt", "--maps", maps, "--", "extra"], ["unexpected argument extra"], 2)
+
 # Broken sample files (each checked before any registration runs).
 corres = os.path.join(data, "corres")
 write_vts(os.path.join(corres, "swapped.vts"), [len(copy_points)] + [new_index[v] for v in mirror][1:])

@@ -237,5 +237,43 @@ expect_failure([hand, hand, "hand.csv", "--bogus"], ["unknown option --bogus"], 
 expect_failure([hand, hand, "hand.csv", "--max-geodesic", "x"], ["--max-geodesic"], code_expected=2)
 expect_failure([hand, hand, "hand.csv", "--truth"], ["--truth needs a file"], code_expected=2)
 
+# Text as editors and other tools write it: a UTF-8 byte-order mark, CR LF or lone CR line
+# ends, in the map and the truth (a byte-order mark was refused: "not a mobius-register CSV").
+with open(os.path.join(work, "hand.csv"), "rb") as f:
+    map_bytes = f.read()
+with open(os.path.join(work, "identity.txt"), "rb") as f:
+    truth_bytes = f.read()
+for label, convert in (("a byte-order mark", lambda b: b"\xef\xbb\xbf" + b),
+                       ("CR LF line ends", lambda b: b.replace(b"\n", b"\r\n")),
+                       ("CR line ends", lambda b: b.replace(b"\n", b"\r"))):
+    for name, data in (("bom-map.csv", convert(map_bytes)), ("bom-truth.txt", convert(truth_bytes))):
+        with open(os.path.join(work, name), "wb") as f:
+            f.write(data)
+    read = figures(hand, hand, "bom-map.csv", "--truth", "bom-truth.txt")
+    check(read is not None and self_map is not None and read["geodesic"] == self_map["geodesic"],
+          f"map and truth with {label}: {read}")
+
+# "--" ends the options: a file whose name starts with '-' is a file.
+shutil.copyfile(os.path.join(work, "hand.csv"), os.path.join(work, "-hand.csv"))
+code, out, err = run("--json", "--", hand, hand, "-hand.csv")
+check(code == 0 and self_map is not None and json.loads(out)["geodesic"] == self_map["geodesic"],
+      f"a map named -hand.csv after --: {code} {err!r}")
+# --json stays JSON whatever a file name holds (a line break, a quote, a byte that is not UTF-8).
+odd = 'truth "odd"\nname\\\x7f.txt'
+shutil.copyfile(os.path.join(work, "identity.txt"), os.path.join(work, odd))
+code, out, err = run(hand, hand, "hand.csv", "--truth", odd, "--json")
+try:
+    check(code == 0 and json.loads(out)["truth"] == odd, f"--json with a line break in a file name: {out!r}")
+except ValueError:
+    check(False, f"--json with a line break in a file name is not JSON: {out!r}")
+# --errors never writes over one of the inputs (it replaced the map it was scoring), also
+# through a link to it.
+before = open(os.path.join(work, "hand.csv"), "rb").read()
+os.symlink("hand.csv", os.path.join(work, "link-to-map.csv"))
+for target in ("hand.csv", "link-to-map.csv", "identity.txt"):
+    expect_failure([hand, hand, "hand.csv", "--truth", "identity.txt", "--errors", target],
+                   [f"--errors {target} is the input", "would be overwritten"])
+check(open(os.path.join(work, "hand.csv"), "rb").read() == before, "--errors wrote over the map")
+
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)
