@@ -367,7 +367,8 @@ const std::vector<Option>& Options()
       { { "--landmarks" }, "--landmarks FILE",
         "points whose images are known: per line a source vertex\n"
         "and its target vertex (0-based vertex numbers of the\n"
-        "files, separated by a comma or spaces; # comments).\n"
+        "files, separated by a comma or spaces; # comments;\n"
+        "a byte-order mark and CR LF or CR line ends are read).\n"
         "The rotation is chosen by them, the refinement maps them\n"
         "exactly; residuals in --json",
         1, SetLandmarks },
@@ -587,9 +588,14 @@ std::string UsageText()
   }
   text << "\n"
           "Exit status: 0 on success; 1 if a mesh cannot be read or mapped (a degenerate map\n"
-          "included, unless --allow-poor-maps), or an output cannot be written (an existing\n"
-          "file without --force included); 2 for usage errors (unknown options, values out\n"
-          "of range, wrong number of meshes, no -o).\n";
+          "included, unless --allow-poor-maps), a landmark names a vertex a mesh does not\n"
+          "have or its repair removed, or an output cannot be written (an existing file\n"
+          "without --force included); 2 for usage errors (unknown options, values out of\n"
+          "range, wrong number of meshes, no -o, a landmarks file that cannot be read, is a\n"
+          "folder, holds a malformed line or no landmark, or gives a vertex twice).\n"
+          "\n"
+          "'--' ends the options: the arguments after it are meshes, also one whose name\n"
+          "starts with '-'.\n";
   return text.str();
 }
 

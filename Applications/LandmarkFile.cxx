@@ -1,10 +1,13 @@
 #include "LandmarkFile.h"
 
+#include "TextFormats.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 
 namespace
 {
@@ -44,7 +47,8 @@ bool ReadLandmarks(std::istream& stream, const std::string& fileName,
 {
   landmarks.clear();
   std::string line;
-  for (int number = 1; std::getline(stream, line); ++number)
+  TextLines lines(stream);
+  while (lines.Next(line))
   {
     const std::vector<std::string> fields = Fields(line);
     if (fields.empty())
@@ -52,17 +56,22 @@ bool ReadLandmarks(std::istream& stream, const std::string& fileName,
       continue;
     }
     mobius::Landmark landmark;
-    landmark.Line = number;
+    landmark.Line = static_cast<int>(lines.Number());
     if (fields.size() != 2 || !ParseVertex(fields[0], landmark.Source) ||
       !ParseVertex(fields[1], landmark.Target))
     {
-      error = fileName + " line " + std::to_string(number) +
+      error = fileName + " line " + std::to_string(lines.Number()) +
         ": a landmark is two vertex numbers (source, target; 0-based non-negative integers, "
         "separated by a comma or spaces), not '" +
-        line + "'";
+        Excerpt(line) + "'";
       return false;
     }
     landmarks.push_back(landmark);
+  }
+  if (stream.bad())
+  {
+    error = fileName + ": cannot read the landmarks file (" + std::strerror(errno) + ")";
+    return false;
   }
   if (landmarks.empty())
   {
@@ -75,7 +84,14 @@ bool ReadLandmarks(std::istream& stream, const std::string& fileName,
 bool ReadLandmarkFile(
   const std::string& fileName, std::vector<mobius::Landmark>& landmarks, std::string& error)
 {
-  std::ifstream file(fileName);
+  // A folder opens as a stream that reads nothing: it would be "no landmarks in the file".
+  struct stat status;
+  if (stat(fileName.c_str(), &status) == 0 && S_ISDIR(status.st_mode))
+  {
+    error = fileName + ": a folder, not a landmarks file";
+    return false;
+  }
+  std::ifstream file(fileName, std::ios::binary);
   if (!file)
   {
     error = fileName + ": cannot read the landmarks file (" + std::strerror(errno) + ")";

@@ -4,6 +4,7 @@
 #include "MobiusInputRows.h"
 #include "MobiusSphericalMapData.h"
 #include "ParallelFor.h"
+#include "ParameterRules.h"
 #include "RegistrationParameters.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
@@ -290,8 +291,12 @@ bool FindLandmarkPoints(vtkPolyData* mesh, vtkPolyData* map, bool source,
     }
     if (point < 0)
     {
-      error = name + ": landmark " + std::to_string(k) + "'s " + (source ? "source" : "target") +
-        " vertex " + std::to_string(vertex) +
+      // A landmark read from a file is named by its file and line, as the user wrote it.
+      const mobius::ParameterNaming naming = options.Landmarks[k].Line > 0
+        ? mobius::ParameterNaming::CommandLine
+        : mobius::ParameterNaming::Filter;
+      error = name + ": " + mobius::LandmarkName(options, k, naming) + ": " +
+        (source ? "source" : "target") + " vertex " + std::to_string(vertex) +
         " is not on the mapped surface: the mesh's repair removed it (a vertex no triangle "
         "uses, or one outside the largest component); choose another vertex";
       return false;

@@ -3,7 +3,10 @@ comments, blank lines) sends each source landmark onto its target vertex, and --
 each one's residual (0 when refined); --landmark-mode 1 does the same by a Moebius transform;
 a file that cannot be read or holds a malformed line, a vertex the mesh does not have, a
 vertex in two landmarks, too few landmarks for --landmark-mode 1, or --landmarks with
---symmetry are one-line errors naming the file and line, and leave no output."""
+--symmetry are one-line errors naming the file and line, and leave no output; files with a
+byte-order mark or CR line ends are read, a folder is named as one, a long malformed line is
+quoted by its start, a vertex given twice is found among 500,000 landmarks at once, and a
+vertex the repair removed is named by the file and line."""
 import json
 import os
 import shutil
@@ -66,6 +69,8 @@ cases = [
     ("negative.csv", "-1,2\n", ["negative.csv line 1", "non-negative"], 2),
     ("empty.csv", "# nothing\n\n", ["empty.csv", "no landmarks"], 2),
     ("twice.csv", "1,2\n1,3\n", ["--landmarks", "source vertex 1 in twice.csv line 1 and twice.csv line 2"], 2),
+    ("target-twice.csv", "1,2\n4,5\n3,5\n6,2\n",
+     ["--landmarks", "target vertex 5 in target-twice.csv line 2 and target-twice.csv line 3"], 2),
     ("outside.csv", f"1,2\n3,{vertices}\n",
      ["--landmarks outside.csv line 2", f"no target vertex {vertices}", f"{vertices} vertices"], 1),
 ]
@@ -73,6 +78,38 @@ for name, text, words, code_expected in cases:
     path = name if text is None else landmarks_file(name, text)
     harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", path, "--resolution", "64"], words, ["bad"],
                            code_expected=code_expected)
+# Landmark files as editors write them: a byte-order mark, CR LF or CR line ends (a byte-order
+# mark and CR line ends were refused as malformed lines, though the mesh readers read them).
+for label, text in (("bom.csv", "\ufeff10,10\n200,200\n"), ("crlf.csv", "10,10\r\n200,200\r\n"),
+                    ("cr.csv", "# marks\r10,10\r200,200\r")):
+    code, out, err = run(hand, hand, "-o", "text-" + label, "--landmarks", landmarks_file(label, text),
+                         "--resolution", "64", "--refine", "none", "--json")
+    check(code == 0 and json.loads(out)["landmarks"]["count"] == 2, f"{label}: {code} {err!r}")
+# A folder is not a file without landmarks; a long malformed line is quoted by its start, not
+# whole (a 2 MB line was quoted in full).
+os.makedirs(os.path.join(work, "a-folder"), exist_ok=True)
+harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", "a-folder"], ["a-folder: a folder, not a landmarks file"],
+                       ["bad"], code_expected=2)
+code, _, err = run(hand, hand, "-o", "bad", "--landmarks", landmarks_file("long.csv", "1,1\n" + "7" * 2_000_000 + "x\n"))
+check(code == 2 and "long.csv line 2" in err and "..." in err and len(err) < 400,
+      f"a 2 MB malformed line: exit {code}, a message of {len(err)} characters")
+# A vertex given twice among 500,000 landmarks: found in one pass (the check compared every
+# pair: 200,000 lines took 20 s, these would take minutes).
+many = "".join(f"{k} {k}\n" for k in range(500_000)) + "3 499999\n"
+code, _, err = run(hand, hand, "-o", "bad", "--landmarks", landmarks_file("many.csv", many), timeout=120)
+check(code == 2 and "source vertex 3 in many.csv line 4 and many.csv line 500001" in err,
+      f"500,000 landmarks, one vertex twice: exit {code}: {err[:300]!r}")
+# A vertex the repair removes (one no triangle uses) is named by the file and line (it was
+# "landmark 1"): status 1, as for a vertex the mesh does not have.
+with open(hand) as f:
+    lines = [line for line in f.read().split("\n") if line.strip()]
+count, faces = int(lines[1].split()[0]), int(lines[1].split()[1])
+with open(os.path.join(work, "hand-unused.off"), "w") as f:
+    f.write("\n".join(["OFF", f"{count + 1} {faces} 0"] + lines[2:2 + count] + ["5 5 5"] + lines[2 + count:]) + "\n")
+harness.expect_failure(["hand-unused.off", "hand-unused.off", "-o", "bad", "--resolution", "64", "--landmarks",
+                        landmarks_file("removed.csv", f"# marks\n\n5 5\n{count} 3\n")],
+                       [f"hand-unused.off: removed.csv line 4: source vertex {count} is not on the mapped surface",
+                        "repair removed it"], ["bad"], code_expected=1)
 harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", landmarks_file("two.csv", "1,1\n2,2\n"),
                         "--landmark-mode", "1"], ["--landmark-mode needs", "not 1 with 2 landmarks"], ["bad"], code_expected=2)
 harness.expect_failure(["--symmetry", hand, "-o", "bad", "--landmarks", good],

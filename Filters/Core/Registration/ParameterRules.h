@@ -29,6 +29,10 @@ enum class ParameterNaming
 std::string CheckRegistrationParameters(
   const RegistrationParameters& parameters, ParameterNaming naming);
 
+/// Landmark number `k` as the interface shows it: "landmark 2" (Filter), "landmarks[2]"
+/// (Python), "FILE line 7" or "pair 2" (CommandLine).
+std::string LandmarkName(const RegistrationParameters& parameters, size_t k, ParameterNaming naming);
+
 /// The first landmark that names a vertex the meshes do not have (the source has
 /// `sourceVertices` vertices, the target `targetVertices`), e.g. "landmarks[2] names source
 /// vertex 5000, which does not exist: the source mesh has 4000 vertices, numbered from 0 to
