@@ -15,8 +15,7 @@ std::string InCommandLineWords(std::string text)
     { "a setting such as Resolution", "an option such as --resolution" },
     { "set AllowPoorMaps to write the result anyway", "--allow-poor-maps writes the result anyway" },
     { "(BasisSize)", "(--basis-size)" },
-    { "set TransformMode to REFLECTIONS", "try --transform reflection" },
-    { "set TransformMode to ROTATIONS", "try --transform rotation" },
+    { "set TransformMode to ROTATIONS_AND_REFLECTIONS", "try --transform both" },
     { "LandmarkMode 1", "--landmark-mode 1" },
   };
   for (const auto& [property, option] : words)

@@ -4,6 +4,7 @@
 #include "EdgeStretch.h"
 #include "MobiusCorrespondenceOutput.h"
 #include "MobiusLaplaceBeltramiBasisData.h"
+#include "MirrorCheck.h"
 #include "MobiusSphericalMapData.h"
 #include "ParallelFor.h"
 #include "RefineCorrespondence.h"
@@ -245,13 +246,24 @@ bool BestReflects(vtkPolyData* aligned)
   return determinant && determinant->GetComponent(0, 0) < 0;
 }
 
-// The warnings about a refined map: a near-equal runner-up (unless the candidate was
-// given), a failed polish.
-void WarnAboutRefinement(
-  vtkCorrespondenceRefinement* filter, const mobius::RefinedCorrespondence& refined)
+// Whether SO3 Register's mirror check found that a transform of the other kind (a reflection
+// for a search of rotations) aligns the pair far better (field data MirrorCheckErrors).
+bool LooksMirrored(vtkPolyData* aligned)
 {
-  const std::string nearEqual =
-    filter->GetCandidate() < 0 ? NearEqualCandidatesWarning(refined.Choice) : std::string();
+  vtkDataArray* errors = aligned->GetFieldData()->GetArray("MirrorCheckErrors");
+  return errors && errors->GetNumberOfValues() == 2 &&
+    mobius::OtherKindFitsFarBetter(errors->GetComponent(0, 0), errors->GetComponent(1, 0));
+}
+
+// The warnings about a refined map: a near-equal runner-up (unless the candidate was given,
+// or the pair looks mirrored: no candidate of the kind searched is right then, and SO3
+// Register's warning says what is), a failed polish.
+void WarnAboutRefinement(vtkCorrespondenceRefinement* filter, vtkPolyData* aligned,
+  const mobius::RefinedCorrespondence& refined)
+{
+  const std::string nearEqual = filter->GetCandidate() < 0 && !LooksMirrored(aligned)
+    ? NearEqualCandidatesWarning(refined.Choice)
+    : std::string();
   if (!nearEqual.empty())
   {
     vtkWarningWithObjectMacro(filter, << nearEqual);
@@ -481,7 +493,7 @@ int vtkCorrespondenceRefinement::ComputeOutput(
   {
     return 0;
   }
-  WarnAboutRefinement(this, refined);
+  WarnAboutRefinement(this, inputs[0], refined);
   AssembleOutput(this, inputs, maps, refined, output);
   const double stageSeconds[4] = { basisTime.count(), refined.CandidateSeconds,
     refined.ExtensionSeconds, refined.PolishSeconds };

@@ -276,8 +276,9 @@ int vtkSO3Register::ComputeOutput(
                            ? "The shapes look mirrored: a reflection aligns them far better ("
                            : "The shapes look the same way round: a rotation aligns them far better (")
                     << "registration error " << std::max(0.0, mirroring.OtherError) << " against "
-                    << mirroring.ChosenError << " in a coarse search); set TransformMode to "
-                    << (this->TransformMode == ROTATIONS ? "REFLECTIONS" : "ROTATIONS") << ".");
+                    << mirroring.ChosenError
+                    << " in a coarse search); set TransformMode to ROTATIONS_AND_REFLECTIONS to "
+                       "search both kinds.");
   }
 
   output->ShallowCopy(source);

@@ -76,8 +76,7 @@ class _Errors(FilterMessages):
     """The filters' messages, in register()'s words."""
 
     # The filters' hints name their properties; here, register()'s options.
-    _HINTS = (("set TransformMode to REFLECTIONS", 'pass transform="reflection"'),
-              ("set TransformMode to ROTATIONS", 'pass transform="rotation"'))
+    _HINTS = (("set TransformMode to ROTATIONS_AND_REFLECTIONS", 'pass transform="both"'),)
 
     def warn(self):
         for message in self.warnings:

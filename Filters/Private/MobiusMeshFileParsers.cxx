@@ -141,12 +141,24 @@ bool ParseOffKeyword(const std::string& keyword, OffHeader& header)
   return prefix.empty();
 }
 
-// The vertices: coordinates may run over lines (free format); after them the rest of the
-// line is skipped: the fields the header announces (ST, C, N), or fields it does not (a
-// color that some writers add to plain OFF files, which are then still read right).
+// How the vertices and faces are laid out over the lines.
+enum class OffLayout
+{
+  // Each vertex and face starts a line and the rest of its last line is skipped: the fields
+  // the header announces (ST, C, N), or fields it does not (a color some writers add to
+  // plain OFF files, which are then still read right). Coordinates and indices may still run
+  // over lines.
+  ElementLines,
+  // Token after token, wherever the lines break (all of a file on one line, several
+  // vertices per line): OFF is free-format. Nothing may follow the last face.
+  FreeFormat
+};
+
+// The vertices: coordinates may run over lines (free format); after them, in ElementLines,
+// the rest of the line is skipped.
 template <typename Next>
 std::string ReadOffVertices(OffTokens& tokens, Next& next, const OffHeader& header,
-  long long numberOfVertices, vtkPolyData* output)
+  long long numberOfVertices, OffLayout layout, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -184,17 +196,21 @@ std::string ReadOffVertices(OffTokens& tokens, Next& next, const OffHeader& head
       }
     }
     points->SetPoint(i, p);
-    tokens.SkipLine();
+    if (layout == OffLayout::ElementLines)
+    {
+      tokens.SkipLine();
+    }
   }
   output->SetPoints(points);
   return {};
 }
 
-// The faces "n i_1 ... i_n [color]": the indices on the count's line, or on the lines after
-// it when the count stands alone (free format); the rest of the last line is the color.
+// The faces "n i_1 ... i_n [color]": in ElementLines, the indices on the count's line, or on
+// the lines after it when the count stands alone (free format), and the rest of the last
+// line is the color; in FreeFormat the n tokens after the count.
 template <typename Next>
 std::string ReadOffFaces(OffTokens& tokens, Next& next, long long numberOfVertices,
-  long long numberOfFaces, long long textSize, vtkPolyData* output)
+  long long numberOfFaces, long long textSize, OffLayout layout, vtkPolyData* output)
 {
   vtkNew<vtkCellArray> polys;
   std::vector<vtkIdType> ids;
@@ -214,7 +230,7 @@ std::string ReadOffFaces(OffTokens& tokens, Next& next, long long numberOfVertic
       return faceError(" does not start with its number of vertices but with '" +
         PrintableLine(token) + "'");
     }
-    const int onLine = tokens.TokensLeftOnLine();
+    const int onLine = layout == OffLayout::ElementLines ? tokens.TokensLeftOnLine() : 0;
     // Not allocated beyond what the text can list (one line "2000000000 0 1 2" would ask
     // for 16 GB).
     if (onLine > 0 && n > onLine)
@@ -250,17 +266,27 @@ std::string ReadOffFaces(OffTokens& tokens, Next& next, long long numberOfVertic
       }
       id = static_cast<vtkIdType>(index);
     }
-    tokens.SkipLine();
+    if (layout == OffLayout::ElementLines)
+    {
+      tokens.SkipLine();
+    }
     polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  std::string rest;
+  if (layout == OffLayout::FreeFormat && next(rest))
+  {
+    return "'" + PrintableLine(rest) + "' follows the last face";
   }
   output->SetPolys(polys);
   return {};
 }
 }
 
-std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
+namespace
 {
-  const std::string text = NormalizedText(fileName);
+// The OFF file's text read with the layout given.
+std::string ReadOffText(const std::string& text, OffLayout layout, vtkPolyData* output)
+{
   OffTokens tokens(text);
   std::string keyword, pending;
   if (!tokens.Next(keyword))
@@ -336,8 +362,32 @@ std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
           << " faces, more than a file of " << size << " bytes can hold";
     return error.str();
   }
-  std::string error = ReadOffVertices(tokens, next, header, numberOfVertices, output);
-  return error.empty() ? ReadOffFaces(tokens, next, numberOfVertices, numberOfFaces, size, output) : error;
+  std::string error = ReadOffVertices(tokens, next, header, numberOfVertices, layout, output);
+  return error.empty()
+    ? ReadOffFaces(tokens, next, numberOfVertices, numberOfFaces, size, layout, output)
+    : error;
+}
+}
+
+std::string ReadOFF(const std::string& fileName, vtkPolyData* output)
+{
+  const std::string text = NormalizedText(fileName);
+  // A line per vertex and per face first: what most writers write, extra fields at the lines'
+  // ends included. A file that cannot be read so (all of it on one line, several vertices per
+  // line) is read token by token, as OFF's free format allows, when that reads every token of
+  // it; otherwise the first reading's reason stands.
+  const std::string error = ReadOffText(text, OffLayout::ElementLines, output);
+  if (error.empty())
+  {
+    return error;
+  }
+  vtkNew<vtkPolyData> freeFormat;
+  if (!ReadOffText(text, OffLayout::FreeFormat, freeFormat).empty())
+  {
+    return error;
+  }
+  output->ShallowCopy(freeFormat);
+  return {};
 }
 
 namespace

@@ -26,9 +26,10 @@ namespace vtk
 std::string NormalizedText(const std::string& fileName);
 
 /// OFF as specified (free-format: counts, coordinates and indices may be spread over lines
-/// as the writer likes; '#' comments), with the optional prefixes ST, C, N, 4 and n of the
-/// header keyword. A face's color after its indices is skipped. `OFF BINARY` is refused
-/// with a message that says so.
+/// as the writer likes, all of them on one line included; '#' comments), with the optional
+/// prefixes ST, C, N, 4 and n of the header keyword. A face's color after its indices, and
+/// fields after a vertex's coordinates on its line, are skipped when each vertex and face
+/// starts a line. `OFF BINARY` is refused with a message that says so.
 std::string ReadOFF(const std::string& fileName, vtkPolyData* output);
 
 /// OBJ positions and faces; see the definition for what is read and skipped.

@@ -370,6 +370,12 @@ written_as = {
     "off: free format (a face's indices on the next line)": (
         "free-faces.off", off_text.replace("\n3 ", "\n3\n"), points),
     "off: counts on the keyword's line": ("one-line-header.off", off_text.replace("OFF\n", "OFF ", 1), points),
+    # OFF is free-format: all of a file on one line, or several vertices to a line (refused:
+    # "vertex 1 of 162 is missing or malformed").
+    "off: everything on one line": ("one-line.off", " ".join(off_text.split()) + "\n", points),
+    "off: three vertices to a line": ("three-per-line.off", "\n".join(
+        off_text.split("\n")[:2] + [" ".join(off_text.split("\n")[2 + k:5 + k]) for k in range(0, len(points), 3)]
+        + off_text.split("\n")[2 + len(points):]), points),
     "off: counts joined to the keyword (OFF162)": ("joined-header.off", off_text.replace("OFF\n", "OFF", 1), points),
     "off: unannounced colors after the coordinates": ("colors-unannounced.off", "\n".join(
         line + (" 0.5 0.5 0.5" if 1 < k < 2 + len(points) else "")

@@ -421,17 +421,23 @@ points, faces = read_off(hand)
 n = len(points)
 # A mirrored pair: no rotation aligns it, and the program says so (it said nothing, and the
 # map came back wrong); the same pair registered by reflections gets no such warning, and the
-# same way round by reflections gets the opposite hint.
+# same way round by reflections gets the opposite hint. Both hints are --transform both,
+# which searches either kind.
 mirrored = [" ".join([repr(-float(p.split()[0]))] + p.split()[1:3]) for p in points]
 write_off(os.path.join(work, "hand-mirrored.off"), mirrored, [[a, c, b] for a, b, c in faces])
-for target, transform, hint in (("hand-mirrored.off", "rotation", "--transform reflection"),
+for target, transform, hint in (("hand-mirrored.off", "rotation", "--transform both"),
                                 ("hand-mirrored.off", "reflection", None),
-                                (hand, "reflection", "--transform rotation"), (hand, "rotation", None)):
+                                (hand, "reflection", "--transform both"), (hand, "rotation", None)):
     code, _, err = run(hand, target, "-o", "mirror-check", "--resolution", "64", "--refine", "none",
                        "--transform", transform, "--force")
     hinted = "look mirrored" in err or "same way round" in err
     check(code == 0 and (hint in err if hint else not hinted),
           f"{os.path.basename(target)} by {transform}: expected {hint or 'no hint'}: {code} {err!r}")
+# Refined, the mirrored pair by rotations: the refinement's candidates are all wrong, and its
+# warning no longer suggests keeping another one (--candidate) as the fix.
+code, _, err = run(hand, "hand-mirrored.off", "-o", "mirror-check", "--resolution", "64", "--force")
+check(code == 0 and "--transform both" in err and "--candidate" not in err,
+      f"mirrored pair refined: the warning should suggest --transform both, not --candidate: {err!r}")
 # OBJ with texture coordinates and normals, faces listed backwards with rotated corners, so
 # VTK's OBJ reader would number the vertices in an order unrelated to the `v` lines.
 with open(os.path.join(work, "hand-vt.obj"), "w") as f:

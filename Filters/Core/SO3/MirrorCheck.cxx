@@ -36,9 +36,15 @@ MirrorCheck CheckMirroring(const SphericalHarmonicCoefficients& source,
     : SO3ReflectionMode::RotationsOnly;
   check.ChosenError = CoarseRegistrationError(source, target, options, options.Reflections);
   check.OtherError = CoarseRegistrationError(source, target, options, other);
-  // Errors are at least 0 up to rounding (a perfect fit comes out near -1e-16).
-  check.OtherFitsFarBetter = check.ChosenError > -0.5 && check.OtherError > -0.5 &&
-    check.OtherError < 0.5 * check.ChosenError && check.ChosenError - check.OtherError >= 0.01;
+  check.OtherFitsFarBetter = OtherKindFitsFarBetter(check.ChosenError, check.OtherError);
   return check;
+}
+
+bool OtherKindFitsFarBetter(double chosenError, double otherError)
+{
+  // Errors are at least 0 up to rounding (a perfect fit comes out near -1e-16); -1: not
+  // checked.
+  return chosenError > -0.5 && otherError > -0.5 && otherError < 0.5 * chosenError &&
+    chosenError - otherError >= 0.01;
 }
 }

@@ -28,6 +28,11 @@ struct MirrorCheck
   bool OtherFitsFarBetter = false;
 };
 
+/// The rule of MirrorCheck::OtherFitsFarBetter, for errors measured before (field data
+/// MirrorCheckErrors: the refinement reads it to know that no candidate of the kind searched
+/// can be right, and says so instead of suggesting another one).
+bool OtherKindFitsFarBetter(double chosenError, double otherError);
+
 /// Both kinds' best fits by a coarse search (one candidate each, a grid of bandwidth 16,
 /// polished on that band-limited correlation), for the options' mode; nothing for mode Both.
 MirrorCheck CheckMirroring(const SphericalHarmonicCoefficients& source,
