@@ -90,6 +90,28 @@ class _Errors(FilterMessages):
             raise RegistrationError(f"{what}: " + "; ".join(self.messages))
 
 
+def _rows(given, name, what):
+    """`given` as a numpy array; ValueError naming the mesh and the row that breaks the shape
+    when its rows differ in length (numpy's own error names neither)."""
+    try:
+        return np.asarray(given)
+    except ValueError:
+        pass
+    lengths = []
+    for row in given:
+        try:
+            lengths.append(len(row))
+        except TypeError:
+            lengths.append(None)
+    first = lengths[0] if lengths else None
+    odd = next((k for k, length in enumerate(lengths) if length != first), None)
+    if odd is None:
+        raise ValueError(f"{name}: {what} must be an array of rows of one length")
+    shown = "a single value" if lengths[odd] is None else f"{lengths[odd]} values"
+    raise ValueError(f"{name}: {what}[{odd}] has {shown}, {what}[0] {first}: {what} must be an (n, 3) array"
+                     + (" of triangles" if what == "faces" else "")) from None
+
+
 def _as_polydata(mesh, name, errors):
     """A file name, a vtkPolyData, or (vertices, faces) arrays, as a vtkPolyData."""
     if isinstance(mesh, (str, bytes, os.PathLike)):
@@ -105,7 +127,7 @@ def _as_polydata(mesh, name, errors):
     if isinstance(mesh, vtkPolyData):
         return mesh, name
     if isinstance(mesh, (tuple, list)) and len(mesh) == 2:
-        given_vertices, given_faces = np.asarray(mesh[0]), np.asarray(mesh[1])
+        given_vertices, given_faces = _rows(mesh[0], name, "vertices"), _rows(mesh[1], name, "faces")
         # numpy would drop an imaginary part, and cut 0.7 to vertex 0, without a word.
         if given_vertices.dtype.kind not in "iuf":
             raise ValueError(f"{name}: vertices must be real numbers, got {given_vertices.dtype}")
@@ -220,7 +242,7 @@ class Registration:
         Corners that fill_holes created (no input vertex) are left out and the remaining
         weights renormalized.
         """
-        values = np.asarray(values)
+        values = _numbers(values)
         if values.ndim not in (1, 2) or values.shape[0] != self.target_vertex_count:
             raise ValueError(f"values must have one row per target vertex ({self.target_vertex_count}), "
                              f"got shape {values.shape}")
@@ -232,6 +254,28 @@ class Registration:
         if values.ndim == 1:
             return np.einsum("ij,ij->i", weights, corners.astype(float))
         return np.einsum("ij,ijk->ik", weights, corners.astype(float))
+
+
+def _numbers(values):
+    """Per-vertex values as a numpy array of real numbers: integers, booleans and floats (NaN
+    is the caller's data and carried); ValueError naming the first entry that is not a real
+    number (None, a string, a complex number), which numpy would turn into NaN, an error of
+    its own or a real part."""
+    try:
+        values = np.asarray(values)
+    except ValueError:
+        raise ValueError("values must be an array of numbers, one row per target vertex, "
+                         "all rows of one length") from None
+    if values.dtype.kind in "biuf":
+        return values
+    flat = values.ravel()
+    for index in range(flat.size):
+        entry = flat[index]
+        if not isinstance(entry, (int, float, np.integer, np.floating, np.bool_)):
+            where = np.unravel_index(index, values.shape)
+            position = ", ".join(str(int(k)) for k in where)
+            raise ValueError(f"values must be real numbers: values[{position}] is {entry!r}")
+    return values.astype(float)
 
 
 _C_INT = (-2 ** 31, 2 ** 31 - 1)

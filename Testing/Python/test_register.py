@@ -199,4 +199,40 @@ for label, mesh in (("complex vertices", (points_array.astype(complex), faces_ar
         print(f"{label}: {error}")
     else:
         raise AssertionError(f"{label} accepted")
+# A ragged faces or vertices list: a message naming the mesh and the row (numpy's own error,
+# "setting an array element with a sequence", named neither).
+ragged_faces = [list(face) for face in faces_array[:40]] + [[0, 1, 2, 3]] + [list(f) for f in faces_array[40:]]
+for label, mesh, words in (("ragged faces", (points_array, ragged_faces), ["target: faces[40] has 4 values", "(n, 3)"]),
+                           ("ragged vertices", ([[0.0, 0.0, 0.0], [1.0, 0.0], [0.0, 1.0, 0.0]], faces_array[:1]),
+                            ["target: vertices[1] has 2 values"]),
+                           ("a number among the faces", (points_array, [[0, 1, 2], 5]),
+                            ["target: faces[1] has a single value"])):
+    try:
+        register(hand, mesh)
+    except ValueError as error:
+        assert all(w in str(error) for w in words), f"{label}: {error}"
+    else:
+        raise AssertionError(f"{label} accepted")
+# transfer() of values that are not numbers: an error naming the first (None came back as NaN
+# without a word, a complex number as its real part).
+small = register(hand, hand, refine=False, resolution=32)
+count = small.target_vertex_count
+for label, values, words in (("None", np.array([None] * count, dtype=object), ["values[0] is None"]),
+                             ("a None among numbers", [1.0] * 7 + [None] + [1.0] * (count - 8), ["values[7] is None"]),
+                             ("a string", np.array(["a"] * count), ["values[0] is 'a'"]),
+                             ("complex", np.full(count, 1 + 2j), ["values[0] is"]),
+                             ("ragged rows", [[1.0, 2.0]] * 3 + [[1.0]] + [[1.0, 2.0]] * (count - 4), ["rows of one length"])):
+    try:
+        small.transfer(values)
+    except ValueError as error:
+        assert all(w in str(error) for w in words), f"transfer() of {label}: {error}"
+    else:
+        raise AssertionError(f"transfer() of {label} accepted")
+# Numbers in an object array (a list of Python ints, say) are carried like any numbers.
+assert np.allclose(small.transfer(np.array([2] * count, dtype=object)), 2.0)
+# A mirrored pair by rotations only: the hint names register()'s option (transform="both").
+with warnings.catch_warnings(record=True) as caught:
+    warnings.simplefilter("always")
+    register(hand, (points_array * [-1.0, 1.0, 1.0], faces_array[:, ::-1]), refine=False, resolution=64)
+assert any('pass transform="both"' in str(w.message) for w in caught), [str(w.message) for w in caught]
 print("register() checks passed")
