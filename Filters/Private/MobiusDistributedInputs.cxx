@@ -1,5 +1,6 @@
 #include "MobiusDistributedInputs.h"
 
+#include "MobiusInputArrays.h"
 #include "MobiusLostPiecesCheck.h"
 #include "MobiusMergePieces.h"
 #include "MobiusSphericalMapData.h"
@@ -47,6 +48,17 @@ vtkMultiProcessController* DistributingController(vtkInformationVector* outputVe
   return controller;
 }
 
+// How messages name the input on `port`: Source and Target for the two-input filters,
+// Input for the others.
+std::string InputName(vtkAlgorithm* filter, int port)
+{
+  if (filter->GetNumberOfInputPorts() != 2)
+  {
+    return "Input";
+  }
+  return port == 0 ? "Source" : "Target";
+}
+
 // Gathers the pieces of the input on `port` on the root and joins them there; null on
 // the other ranks. Every rank must call it, for every port in the same order.
 vtkSmartPointer<vtkPolyData> GatherWholeInput(vtkAlgorithm* filter,
@@ -72,6 +84,15 @@ vtkSmartPointer<vtkPolyData> GatherWholeInput(vtkAlgorithm* filter,
     pieces.push_back(static_cast<int>(rank) == RootProcess
         ? local
         : vtkPolyData::SafeDownCast(received[rank]));
+    // Joining the pieces copies their arrays: each must fit its piece first.
+    const std::string mismatch = MismatchedArray(pieces.back());
+    if (!mismatch.empty())
+    {
+      vtkErrorWithObjectMacro(filter, << InputName(filter, port) << " (the piece of rank " << rank
+                                      << "): " << mismatch << ".");
+      failed = true;
+      return nullptr;
+    }
   }
   const MergedPieces merged = MergePieces(pieces);
   if (!merged.Error.empty())
@@ -92,7 +113,8 @@ vtkSmartPointer<vtkPolyData> GatherWholeInput(vtkAlgorithm* filter,
   return merged.Surface;
 }
 
-// Runs `compute` unless an input is empty (then the output stays empty: not an error).
+// Runs `compute` unless an input is empty (then the output stays empty: not an error) or
+// holds an array that does not fit its mesh (an error).
 int ComputeUnlessEmpty(vtkAlgorithm* filter, std::vector<vtkInformationVector*> inputs,
   const WholeInputsComputation& compute)
 {
@@ -103,6 +125,15 @@ int ComputeUnlessEmpty(vtkAlgorithm* filter, std::vector<vtkInformationVector*> 
     {
       vtkDebugWithObjectMacro(filter, << "An input is empty: the output is empty.");
       return 1;
+    }
+  }
+  for (size_t port = 0; port < inputs.size(); ++port)
+  {
+    const std::string mismatch = MismatchedArray(vtkPolyData::GetData(inputs[port]));
+    if (!mismatch.empty())
+    {
+      vtkErrorWithObjectMacro(filter, << InputName(filter, static_cast<int>(port)) << ": " << mismatch << ".");
+      return 0;
     }
   }
   return compute(inputs.data());

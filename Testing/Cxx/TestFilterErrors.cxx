@@ -1,15 +1,26 @@
 // Hostile input to the filters: every filter rejects a triangle that refers to a point out
-// of range with an error (reading or writing out of bounds before); an exception inside a
+// of range with an error (reading or writing out of bounds before), and a point or cell array
+// whose tuple count is not the mesh's (a short target array was read past its end and
+// carried over as garbage or NaN); an exception inside a
 // filter (std::bad_alloc, or one carried out of a worker thread) becomes that filter's
 // error instead of ending the program.
 #include "MobiusTestUtilities.h"
+#include "vtkCenteredSphericalMap.h"
+#include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
+#include "vtkLaplaceBeltramiBasis.h"
 #include "vtkMobiusCenter.h"
+#include "vtkMobiusRegistration.h"
 #include "vtkSO3Register.h"
 #include "vtkSphericalConformalMap.h"
+#include "vtkSphericalOrbifoldMap.h"
 #include "vtkSphericalScaleGrid.h"
+#include "vtkSymmetryDetection.h"
 
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkIntArray.h"
 
 #include <new>
 #include <stdexcept>
@@ -90,6 +101,76 @@ int TestOutOfRangeIds()
 
 // The executive reports progress 0 and 1 around RequestData; the filters report values
 // between while they work.
+// A copy of `mesh` with an array of `tuples` values added to its point data (or cell data).
+vtkSmartPointer<vtkPolyData> WithArray(vtkPolyData* mesh, bool pointData, vtkIdType tuples)
+{
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->DeepCopy(mesh);
+  vtkNew<vtkDoubleArray> array;
+  array->SetName("temperature");
+  array->SetNumberOfComponents(2);
+  array->SetNumberOfTuples(tuples);
+  array->Fill(1.5);
+  (pointData ? static_cast<vtkDataSetAttributes*>(result->GetPointData())
+             : static_cast<vtkDataSetAttributes*>(result->GetCellData()))
+    ->AddArray(array);
+  return result;
+}
+
+int TestMismatchedArrays()
+{
+  int failures = 0;
+  auto mesh = BumpyMesh(2);
+  auto map = mobius_test::MakeSphericalMap(2, mobius_test::BumpySurface);
+  // Every filter with inputs, each input given a mesh (the conformal map's kind of input) or
+  // a spherical map (the others').
+  struct Case
+  {
+    vtkSmartPointer<vtkPolyDataAlgorithm> Filter;
+    bool TakesMesh;
+  };
+  const auto cases = [] {
+    std::vector<Case> list = {
+      { vtkSmartPointer<vtkSphericalConformalMap>::New(), true },
+      { vtkSmartPointer<vtkCenteredSphericalMap>::New(), true },
+      { vtkSmartPointer<vtkSymmetryDetection>::New(), false },
+      { vtkSmartPointer<vtkSphericalOrbifoldMap>::New(), false },
+      { vtkSmartPointer<vtkMobiusCenter>::New(), false },
+      { vtkSmartPointer<vtkSphericalScaleGrid>::New(), false },
+      { vtkSmartPointer<vtkLaplaceBeltramiBasis>::New(), false },
+      { vtkSmartPointer<vtkSO3Register>::New(), false },
+      { vtkSmartPointer<vtkDenseCorrespondence>::New(), false },
+      { vtkSmartPointer<vtkCorrespondenceRefinement>::New(), false },
+      { vtkSmartPointer<vtkMobiusRegistration>::New(), true },
+    };
+    return list;
+  };
+  for (const bool pointData : { true, false })
+  {
+    for (const int change : { -1, 1, -1000 })
+    {
+      for (const Case& c : cases())
+      {
+        vtkPolyData* base = c.TakesMesh ? mesh.Get() : map.Get();
+        const vtkIdType count = pointData ? base->GetNumberOfPoints() : base->GetNumberOfCells();
+        const vtkIdType tuples = std::max<vtkIdType>(0, count + change);
+        const auto bad = WithArray(base, pointData, tuples);
+        const int ports = c.Filter->GetNumberOfInputPorts();
+        // The bad array on the last input (a two-input filter's Target).
+        for (int port = 0; port < ports; ++port)
+        {
+          c.Filter->SetInputDataObject(port, port + 1 == ports ? bad.Get() : base);
+        }
+        const std::string input = ports == 2 ? "Target: " : "Input: ";
+        failures += ExpectError(c.Filter, input + "the " + (pointData ? "point" : "cell") +
+            " array 'temperature' has " + std::to_string(tuples) + " values (tuples) for " +
+            std::to_string(count));
+      }
+    }
+  }
+  return failures;
+}
+
 bool InsideRequestData(void* progress)
 {
   const double fraction = *static_cast<double*>(progress);
@@ -272,6 +353,7 @@ int TestFilterErrors(int, char*[])
 {
   int failures = 0;
   failures += TestOutOfRangeIds();
+  failures += TestMismatchedArrays();
   failures += TestExceptionsBecomeErrors();
   failures += TestDuplicateTriangles();
   failures += TestNonOrientable();
