@@ -7,6 +7,7 @@
 #include "MemoryReuse.h"
 #include "OutputFiles.h"
 #include "RegistrationPipeline.h"
+#include "StackLimit.h"
 #include "StandardOutput.h"
 #include "VTKMessages.h"
 
@@ -285,6 +286,11 @@ int main(int argc, char* argv[])
   // with its own one-line reason.
   CaptureVTKMessages();
   KeepFreedMemoryForReuse();
+  const std::string stack = CheckStackLimit(Program);
+  if (!stack.empty())
+  {
+    return Fail(stack);
+  }
   try
   {
     const int status = Run(argc, argv);

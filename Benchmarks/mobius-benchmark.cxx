@@ -20,6 +20,7 @@
 // vertices per level) up to MAX_VERTICES, each mapped once in a child process so that its
 // peak memory is its own (Benchmarks/plot_ladder.py draws the CSV).
 #include "MemoryReuse.h"
+#include "StackLimit.h"
 #include "CorrespondenceScore.h"
 #include "vtkCorrespondenceRefinement.h"
 #include "vtkDenseCorrespondence.h"
@@ -406,6 +407,12 @@ int Usage(std::ostream& out, int status)
 int main(int argc, char* argv[])
 {
   KeepFreedMemoryForReuse();
+  const std::string stack = CheckStackLimit("mobius-benchmark");
+  if (!stack.empty())
+  {
+    std::cerr << "mobius-benchmark: " << stack << std::endl;
+    return 1;
+  }
   int repeat = 3;
   std::vector<int> resolutions = { 128, 256, 512 };
   std::string stages = "map,grid,register,correspond,refine";

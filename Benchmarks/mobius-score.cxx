@@ -11,6 +11,7 @@
 #include "ScoreInput.h"
 
 #include "PublishOutputs.h"
+#include "StackLimit.h"
 #include "StandardOutput.h"
 #include "TextFormats.h"
 
@@ -435,6 +436,11 @@ int ScoreMap(int argc, char* argv[])
 
 int main(int argc, char* argv[])
 {
+  const std::string stack = CheckStackLimit(Program);
+  if (!stack.empty())
+  {
+    return Fail(stack);
+  }
   const int status = IsDatasetScore(argc, argv) ? RunDatasetScore(argc, argv) : ScoreMap(argc, argv);
   std::string error;
   return status == 0 && !FlushStandardOutput(error) ? Fail(error) : status;

@@ -594,6 +594,19 @@ if not sanitized:
     if check(code == 0, f"a 256 KB stack: exit code {code}: {err!r}"):
         check_result("a 256 KB stack, two threads", "small-stack", self_map=True)
         outcomes.append(("a 256 KB stack, two threads", "result"))
+    # 200 KB with the default basis: the refinement's matrix products put their 128 KB
+    # temporaries on the stack (SIGSEGV in FitFunctionalMap); they come from the heap now.
+    code, _, err = harness.run(fine, fine, "-o", "smaller-stack", "--resolution", "32", "--threads", "2",
+                               "--quiet", timeout=timeout, stack=200 * 2 ** 10)
+    if check(code == 0, f"a 200 KB stack: exit code {code}: {err!r}"):
+        check_result("a 200 KB stack, two threads, refined", "smaller-stack", self_map=True)
+        outcomes.append(("a 200 KB stack, two threads, refined", "result"))
+    # Too small for the program: one line that says so, before any work, not a crash.
+    arguments = [fine, fine, "-o", "tiny-stack", *FAST]
+    code, _, err = harness.run(*arguments, timeout=timeout, stack=64 * 2 ** 10)
+    harness.check_one_line_error(arguments, code, err, ["the stack limit is 64 KB (ulimit -s)", "at least 128 KB"],
+                                 ["tiny-stack"])
+    outcomes.append(("a 64 KB stack", "error: " + err.strip()[:60]))
 os.remove(os.path.join(work, sparse))
 
 # --- 8. Random mutations (fixed seed): bytes changed, inserted, deleted in valid files. ----
