@@ -13,6 +13,7 @@
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
 #include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
+#include <string>  // For SettingsError
 #include <utility> // For the landmarks
 #include <vector>  // For the landmarks
 
@@ -30,6 +31,12 @@ public:
    */
   void AddLandmark(vtkIdType sourceVertex, vtkIdType targetVertex);
   void RemoveAllLandmarks();
+  /**
+   * The landmarks as one list of values, source and target vertex in turn (ParaView's
+   * Landmarks property): each second value completes a landmark. A list of odd length is the
+   * filter's error when it runs (the last value has no partner), not dropped.
+   */
+  void AddLandmarkValue(vtkIdType value);
   vtkIdType GetNumberOfLandmarks();
   /** The source and target vertex of landmark `landmark` (-1 if there is no such landmark). */
   vtkIdType GetLandmarkSourceVertex(vtkIdType landmark);
@@ -41,6 +48,11 @@ protected:
   ~vtkMobiusLandmarkPolyDataAlgorithm() override = default;
 
   std::vector<std::pair<vtkIdType, vtkIdType>> Landmarks;
+  /// AddLandmarkValue's value still waiting for its partner.
+  bool HasUnpairedValue = false;
+  vtkIdType UnpairedValue = 0;
+
+  std::string SettingsError() override;
 
 private:
   vtkMobiusLandmarkPolyDataAlgorithm(const vtkMobiusLandmarkPolyDataAlgorithm&) = delete;

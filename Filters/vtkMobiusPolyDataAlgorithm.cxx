@@ -6,6 +6,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkDataObject.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 
@@ -24,6 +25,17 @@ int vtkMobiusPolyDataAlgorithm::RequestData(
     {
       return mobius::vtk::ReportException(this, outputVector, this->ExceptionSubject());
     }
+  }
+  // Settings no input can make right (the same on every rank: all ranks stop here alike).
+  const std::string settings = this->SettingsError();
+  if (!settings.empty())
+  {
+    if (vtkDataObject* output = vtkDataObject::GetData(outputVector))
+    {
+      output->Initialize();
+    }
+    vtkErrorMacro(<< settings);
+    return 0;
   }
   // The whole surface, also when ParaView splits it over ranks (the result then lives on
   // rank 0); an empty input gives an empty output; RequestDataOnWholeInputs guards against

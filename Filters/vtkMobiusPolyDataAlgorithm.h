@@ -7,7 +7,9 @@
  * (final here) runs it:
  * - on the whole surface of every input, also when ParaView splits the inputs over ranks
  *   (the result then lives on rank 0; MobiusDistributedInputs.h); an empty input gives an
- *   empty output and no error. A source (no input port) runs as it is.
+ *   empty output and no error (a two-input filter with one input empty and the other not
+ *   warns, naming the empty one). A source (no input port) runs as it is.
+ * - after SettingsError, whose message is the filter's error.
  * - behind the exception guard: no exception leaves the pipeline (in ParaView it would end
  *   the application); running out of memory, or a failure in a worker thread, becomes the
  *   filter's error, prefixed by ExceptionSubject (a file name), with an empty output.
@@ -51,6 +53,13 @@ protected:
    * What an exception's message is about (a file name); empty (default): "Failed".
    */
   virtual std::string ExceptionSubject() { return {}; }
+
+  /**
+   * What is wrong with the filter's settings whatever its inputs (an odd number of landmark
+   * values); empty (default) when nothing is. RequestData reports it as the filter's error,
+   * with an empty output, before it reads the inputs.
+   */
+  virtual std::string SettingsError() { return {}; }
 
   /**
    * Runs `filter` as a stage of this filter, its progress the slice [begin, end] of this

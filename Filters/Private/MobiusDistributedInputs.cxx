@@ -113,19 +113,32 @@ vtkSmartPointer<vtkPolyData> GatherWholeInput(vtkAlgorithm* filter,
   return merged.Surface;
 }
 
-// Runs `compute` unless an input is empty (then the output stays empty: not an error) or
-// holds an array that does not fit its mesh (an error).
+// Runs `compute` unless an input is empty (then the output stays empty: not an error, and a
+// warning when another input is not) or holds an array that does not fit its mesh (an
+// error).
 int ComputeUnlessEmpty(vtkAlgorithm* filter, std::vector<vtkInformationVector*> inputs,
   const WholeInputsComputation& compute)
 {
-  for (vtkInformationVector* input : inputs)
+  std::string emptyInputs;
+  size_t empty = 0;
+  for (size_t port = 0; port < inputs.size(); ++port)
   {
-    vtkPolyData* data = vtkPolyData::GetData(input);
+    vtkPolyData* data = vtkPolyData::GetData(inputs[port]);
     if (data && IsEmptyPiece(data))
     {
-      vtkDebugWithObjectMacro(filter, << "An input is empty: the output is empty.");
-      return 1;
+      emptyInputs += (empty++ ? " and " : "") + InputName(filter, static_cast<int>(port));
     }
+  }
+  if (empty > 0)
+  {
+    // One input of two empty and the other not is the user's to know (a Target whose
+    // filter produced nothing); nothing at all upstream is VTK's quiet empty pipeline.
+    if (empty < inputs.size())
+    {
+      vtkWarningWithObjectMacro(filter, << emptyInputs << " is empty (no points and no cells): "
+                                        << "the output is empty.");
+    }
+    return 1;
   }
   for (size_t port = 0; port < inputs.size(); ++port)
   {

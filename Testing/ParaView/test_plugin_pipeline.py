@@ -1,7 +1,9 @@
 """pvpython: the filters by their menu names on a real mesh (CGAL's hand, from libcgal-demo):
 OFF reader -> Spherical Conformal Map -> Mobius Center -> Spherical Scale Grid, and
 SO3 Register of the hand with a copy turned by a known rotation (ParaView's Transform), which
-must find that rotation and map every vertex near its turned counterpart."""
+must find that rotation and map every vertex near its turned counterpart; a Landmarks list of
+odd length is an error and an empty Target a warning (both gave an empty or partial result
+without a word)."""
 import math
 import os
 import sys
@@ -97,3 +99,39 @@ for stage in (DenseCorrespondence(Source=guided, Target=turned_centered, Landmar
         gap = math.dist(stage_mapped.GetTuple3(rows[source_id]), truth.GetPoint(target_id))
         assert gap <= 1e-9 * diagonal, (stage.GetXMLName(), source_id, gap)
 print("landmarks on SO3 Register, Dense Correspondence and Refine Correspondence: respected")
+
+
+def messages(proxy):
+    """The errors and warnings the proxy's VTK filter reports from now on (builtin session)."""
+    caught = {"ErrorEvent": [], "WarningEvent": []}
+    for event in caught:
+        def record(obj, name, text=None, event=event):
+            caught[event].append(str(text))
+        record.CallDataType = "string0"
+        proxy.GetClientSideObject().AddObserver(event, record)
+    return caught
+
+
+# An odd number of landmark values: an error naming it (the last value was dropped silently
+# by ParaView's pairs of two), not a registration with one landmark fewer.
+odd = MobiusRegistration(Source=mesh, Target=turned, Resolution=64, Refine=0,  # noqa: F821
+                         Landmarks=[0, 0, 400, 400, 900])
+caught = messages(odd)
+odd.UpdatePipeline()
+assert any("Landmarks holds 5 values, an odd number" in e and "900" in e for e in caught["ErrorEvent"]), caught
+assert servermanager.Fetch(odd).GetNumberOfPoints() == 0
+odd.Landmarks = flat
+odd.UpdatePipeline()
+assert servermanager.Fetch(odd).GetFieldData().GetArray("LandmarkCount").GetValue(0) == 3
+# An empty Target (a clip that keeps nothing): a warning naming it with the empty output.
+nothing = Clip(Input=mesh, ClipType="Plane")  # noqa: F821
+nothing.ClipType.Origin = [0.0, 0.0, 1e9]
+nothing.ClipType.Normal = [0.0, 0.0, 1.0]
+nothing.Invert = 0
+empty_target = ExtractSurface(Input=nothing)  # noqa: F821
+hollow = MobiusRegistration(Source=mesh, Target=empty_target, Resolution=64, Refine=0)  # noqa: F821
+caught = messages(hollow)
+hollow.UpdatePipeline()
+assert servermanager.Fetch(empty_target).GetNumberOfPoints() == 0
+assert any("Target is empty" in w for w in caught["WarningEvent"]), caught
+print("an odd Landmarks list: an error; an empty Target: a warning")
