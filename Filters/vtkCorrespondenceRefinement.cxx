@@ -252,7 +252,7 @@ bool LooksMirrored(vtkPolyData* aligned)
 {
   vtkDataArray* errors = aligned->GetFieldData()->GetArray("MirrorCheckErrors");
   return errors && errors->GetNumberOfValues() == 2 &&
-    mobius::OtherKindFitsFarBetter(errors->GetComponent(0, 0), errors->GetComponent(1, 0));
+    mobius::OtherKindFitsFarBetter(errors->GetComponent(0, 0), errors->GetComponent(0, 1));
 }
 
 // The warnings about a refined map: a near-equal runner-up (unless the candidate was given,

@@ -6,7 +6,8 @@ vertex in two landmarks, too few landmarks for --landmark-mode 1, or --landmarks
 --symmetry are one-line errors naming the file and line, and leave no output; files with a
 byte-order mark or CR line ends are read, a folder is named as one, a long malformed line is
 quoted by its start, a vertex given twice is found among 500,000 landmarks at once, and a
-vertex the repair removed is named by the file and line."""
+vertex the repair removed is named by the file and line; landmarks that contradict the map
+(swapped, mirrored, of another numbering, against --candidate) get a warning naming them."""
 import json
 import os
 import shutil
@@ -110,6 +111,39 @@ harness.expect_failure(["hand-unused.off", "hand-unused.off", "-o", "bad", "--re
                         landmarks_file("removed.csv", f"# marks\n\n5 5\n{count} 3\n")],
                        [f"hand-unused.off: removed.csv line 4: source vertex {count} is not on the mapped surface",
                         "repair removed it"], ["bad"], code_expected=1)
+# Landmarks that contradict the map: the transform the map starts from leaves them more than
+# 60 degrees from their targets on the centered spheres, and the map was bent to meet them
+# without a word. The hand against a stretched, inflated copy (landmark_pair_scores' "b"), 5
+# landmarks in farthest-point order: right, two targets swapped, a mirrored target searched
+# by rotations only, another vertex numbering, and --candidate against them.
+import numpy  # noqa: E402
+import landmark_pair_scores  # noqa: E402
+local, copy, marks = landmark_pair_scores.stretched_copy(landmark_pair_scores.read_off(hand)[0], "b")
+hand_faces = landmark_pair_scores.read_off(hand)[1]
+landmark_pair_scores.write_off(os.path.join(work, "stretched-src.off"), local, hand_faces)
+landmark_pair_scores.write_off(os.path.join(work, "stretched-tgt.off"), copy, hand_faces)
+landmark_pair_scores.write_off(os.path.join(work, "stretched-mirror.off"), copy * [1, 1, -1], hand_faces[:, ::-1])
+right = landmarks_file("right.csv", "".join(f"{i},{j}\n" for i, j in marks))
+swapped = landmarks_file("swapped.csv", "".join(f"{i},{j}\n" for i, j in
+                                                [(marks[0][0], marks[1][1]), (marks[1][0], marks[0][1])] + marks[2:]))
+numbering = landmarks_file("numbering.csv", "".join(
+    f"{i},{int(j)}\n" for (i, _), j in zip(marks, numpy.random.default_rng(1).integers(len(copy), size=len(marks)))))
+DISAGREE = "The landmarks disagree with the map"
+for label, target, file, options, words in (
+        ("right landmarks", "stretched-tgt.off", right, [], None),
+        ("a mirrored target, both kinds searched", "stretched-mirror.off", right, ["--transform", "both"], None),
+        ("two targets swapped", "stretched-tgt.off", swapped, [], [DISAGREE, "swapped.csv line", "more than 60 degrees"]),
+        ("a mirrored target, rotations only", "stretched-mirror.off", right, [],
+         [DISAGREE, "right.csv line", "if the shapes are mirror images of each other, try --transform both"]),
+        ("another vertex numbering", "stretched-tgt.off", numbering, [], [DISAGREE, "numbering.csv line"]),
+        ("--candidate against them", "stretched-tgt.off", right, ["--candidate", "3"],
+         [DISAGREE, "Candidate 3 was asked for", "or let the refinement choose"])):
+    code, _, err = run("stretched-src.off", target, "-o", "disagree", "--force", "--resolution", "128",
+                       "--landmarks", file, *options)
+    if words is None:
+        check(code == 0 and DISAGREE not in err, f"{label}: exit {code}, a disagreement warning: {err!r}")
+    else:
+        check(code == 0 and all(w in err for w in words), f"{label}: exit {code}, expected {words}: {err!r}")
 harness.expect_failure([hand, hand, "-o", "bad", "--landmarks", landmarks_file("two.csv", "1,1\n2,2\n"),
                         "--landmark-mode", "1"], ["--landmark-mode needs", "not 1 with 2 landmarks"], ["bad"], code_expected=2)
 harness.expect_failure(["--symmetry", hand, "-o", "bad", "--landmarks", good],

@@ -11,21 +11,31 @@
 
 namespace mobius
 {
+std::vector<double> LandmarkAngles(const Eigen::Matrix3d& transform, const SphereLandmarks& landmarks)
+{
+  std::vector<double> angles;
+  for (Index k = 0; k < landmarks.Source.rows(); ++k)
+  {
+    const Eigen::Vector3d p = transform * landmarks.Source.row(k).transpose();
+    const Eigen::Vector3d q = landmarks.Target.row(k).transpose();
+    angles.push_back(std::atan2(p.cross(q).norm(), p.dot(q)));
+  }
+  return angles;
+}
+
 double LandmarkAngle(const Eigen::Matrix3d& transform, const SphereLandmarks& landmarks)
 {
-  const Index count = landmarks.Source.rows();
-  if (count == 0)
+  const std::vector<double> angles = LandmarkAngles(transform, landmarks);
+  if (angles.empty())
   {
     return 0.0;
   }
   double sum = 0;
-  for (Index k = 0; k < count; ++k)
+  for (double angle : angles)
   {
-    const Eigen::Vector3d p = transform * landmarks.Source.row(k).transpose();
-    const Eigen::Vector3d q = landmarks.Target.row(k).transpose();
-    sum += std::pow(std::atan2(p.cross(q).norm(), p.dot(q)), 2);
+    sum += angle * angle;
   }
-  return std::sqrt(sum / static_cast<double>(count));
+  return std::sqrt(sum / static_cast<double>(angles.size()));
 }
 
 Eigen::Matrix3d FitLandmarkTransform(const SphereLandmarks& landmarks, double determinant)

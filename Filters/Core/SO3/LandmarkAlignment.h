@@ -28,6 +28,17 @@ struct SphereLandmarks
 /// brings every landmark onto its target.
 double LandmarkAngle(const Eigen::Matrix3d& transform, const SphereLandmarks& landmarks);
 
+/// Per landmark, the angle (radians) between T p_k and q_k.
+std::vector<double> LandmarkAngles(const Eigen::Matrix3d& transform, const SphereLandmarks& landmarks);
+
+/// A landmark this far (radians) from its target on the centered spheres, under the rotation
+/// a map starts from, disagrees with that map: 60 degrees. Landmarks in farthest-point order
+/// on CGAL's meshes against stretched and inflated copies (5 each; 7 meshes, 2 copies) and
+/// SMPL's man -> woman came within 42 degrees under the rotation the refinement kept; two
+/// landmarks swapped, the mirror image with rotations only, another vertex numbering or a
+/// --candidate against them left one or more 73 to 177 degrees away.
+inline constexpr double kLandmarkDisagreementAngle = 1.0471975511965976;
+
 /// The orthogonal T of determinant `determinant` (+1 or -1) minimizing sum |T p_k - q_k|^2
 /// (Kabsch / orthogonal Procrustes, by an SVD of the landmarks' covariance).
 Eigen::Matrix3d FitLandmarkTransform(const SphereLandmarks& landmarks, double determinant);
