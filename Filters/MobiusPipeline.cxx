@@ -355,10 +355,9 @@ bool CheckDistinctLandmarkPoints(const std::vector<vtkIdType>& points, bool sour
     {
       auto vertex = [&](size_t l) {
         const mobius::Landmark& landmark = options.Landmarks[l];
-        return std::to_string(source ? landmark.Source : landmark.Target) +
-          (landmark.Line > 0 ? " (line " + std::to_string(landmark.Line) + ")" : "");
+        return std::to_string(source ? landmark.Source : landmark.Target);
       };
-      error = name + ": landmarks " + std::to_string(at->second) + " and " + std::to_string(k) +
+      error = name + ": " + LandmarkLabel(options, at->second) + " and " + LandmarkLabel(options, k) +
         " name " + (source ? "source" : "target") + " vertices " + vertex(at->second) + " and " +
         vertex(k) + ", which are one point of the surface (duplicates at one position, merged by "
         "the repair): give only one of them";

@@ -202,7 +202,7 @@ int ExpectMergedDuplicates(vtkPolyData* mesh, const std::array<vtkIdType, 3>& ve
     auto twice = Registration(soup, mesh);
     twice->AddLandmark(copies[0], vertices[0]);
     twice->AddLandmark(copies[1], vertices[1]);
-    failures += ExpectError(twice, "landmarks 0 and 1 name source vertices " + std::to_string(copies[0]) +
+    failures += ExpectError(twice, "landmark 0 and landmark 1 name source vertices " + std::to_string(copies[0]) +
         " and " + std::to_string(copies[1]) + ", which are one point of the surface");
   }
   return failures;

@@ -230,6 +230,32 @@ for label, values, words in (("None", np.array([None] * count, dtype=object), ["
         raise AssertionError(f"transfer() of {label} accepted")
 # Numbers in an object array (a list of Python ints, say) are carried like any numbers.
 assert np.allclose(small.transfer(np.array([2] * count, dtype=object)), 2.0)
+# Two landmarks on two copies of one vertex, which the repair merges into one point, with two
+# targets: one could not be kept (it was accepted, and the second missed its target by 0.4
+# sqrt(area) without a word): an error naming both.
+corner = int(faces_array[0][0])
+copy_points = np.vstack([points_array, points_array[corner]])
+copy_faces = faces_array.copy()
+copy_faces[0][0] = len(points_array)
+try:
+    register((copy_points, copy_faces), hand, landmarks=[(corner, 10), (len(points_array), 200), (400, 400)],
+             resolution=64, refine=False)
+except RegistrationError as error:
+    assert f"name source vertices {corner} and {len(points_array)}, which are one point" in str(error), error
+else:
+    raise AssertionError("two landmarks on one merged point accepted")
+# A vertex at 1e308: unused, it is a stray point the map still gives a row (it sets no scale);
+# used by a triangle, the error names it (both were "every triangle has zero area").
+stray = register((np.vstack([points_array, [1e308, 0, 0]]), faces_array), hand, resolution=64, refine=False)
+assert len(stray.source_vertex) == len(points_array) + 1 and np.isfinite(stray.mapped_points).all()
+spike_points = points_array.astype(float)
+spike_points[corner] = [1e308, 0, 0]
+try:
+    register((spike_points, faces_array), hand, resolution=64, refine=False)
+except RegistrationError as error:
+    assert f"point {corner} is 1e+308 from the origin" in str(error), error
+else:
+    raise AssertionError("a triangle's vertex at 1e308 accepted")
 # A mirrored pair by rotations only: the hint names register()'s option (transform="both").
 with warnings.catch_warnings(record=True) as caught:
     warnings.simplefilter("always")
