@@ -49,6 +49,72 @@ std::string CheckOrbifoldParameters(Index numberOfPoints, int copies, Index cone
   return std::string();
 }
 
+std::string FindConeVertices(
+  const std::vector<Index>& inputIds, const Index coneIds[2], Index cones[2])
+{
+  for (int c = 0; c < 2 && coneIds[0] >= 0; ++c)
+  {
+    cones[c] = -1;
+    for (size_t i = 0; i < inputIds.size(); ++i)
+    {
+      if (inputIds[i] == coneIds[c])
+      {
+        cones[c] = static_cast<Index>(i);
+      }
+    }
+    if (cones[c] < 0)
+    {
+      std::ostringstream s;
+      s << "cone " << coneIds[c]
+        << " is not a vertex of the repaired surface (an unused or duplicate point the "
+           "conformal map dropped)";
+      return s.str();
+    }
+  }
+  return std::string();
+}
+
+OrbifoldOutputMesh SelectOrbifoldOutput(const SphericalOrbifoldMapResult& result,
+  const Points& surface, const Triangles& triangles, bool wholeCovering)
+{
+  const CyclicCovering& covering = result.Covering;
+  const Index F = triangles.rows();
+  const Index outputTriangles = wholeCovering ? covering.CoveringTriangles.rows() : F;
+  const Vector areas = TriangleAreas(surface, triangles);
+  OrbifoldOutputMesh mesh;
+  mesh.OutputTriangles.resize(outputTriangles, 3);
+  mesh.TriangleAreas.resize(outputTriangles);
+  std::vector<Index> newId(covering.SourceVertex.size(), -1);
+  std::vector<Index> used; // covering vertices in order of first use
+  for (Index t = 0; t < outputTriangles; ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const Index w = covering.CoveringTriangles(t, c);
+      if (newId[w] < 0)
+      {
+        newId[w] = static_cast<Index>(used.size());
+        used.push_back(w);
+      }
+      mesh.OutputTriangles(t, c) = newId[w];
+    }
+    mesh.TriangleCopy.push_back(static_cast<int>(t / F));
+    mesh.TriangleAreas[t] = areas[t % F];
+  }
+  const Index n = static_cast<Index>(used.size());
+  mesh.SpherePoints.resize(n, 3);
+  mesh.SurfacePoints.resize(n, 3);
+  for (Index i = 0; i < n; ++i)
+  {
+    const Index w = used[i];
+    mesh.SourceVertex.push_back(covering.SourceVertex[w]);
+    mesh.VertexCopy.push_back(covering.VertexCopy[w]);
+    mesh.SpherePoints.row(i) = result.CoveringMap.row(w);
+    mesh.SurfacePoints.row(i) = surface.row(covering.SourceVertex[w]);
+  }
+  return mesh;
+}
+
 SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
   const Triangles& triangles, const Points& plainMap,
   const SphericalOrbifoldMapParameters& parameters)
