@@ -78,7 +78,9 @@ struct OrbifoldInputs
   std::vector<mobius::Index> InputIds;
 };
 
-std::string ExtractOrbifoldInputs(vtkPolyData* map, OrbifoldInputs& in)
+// ... and the mesh vertices of the cones named by point id.
+std::string ExtractOrbifoldInputs(
+  vtkPolyData* map, const vtkIdType coneIds[2], OrbifoldInputs& in, mobius::Index cones[2])
 {
   std::string error = mobius::vtk::ExtractPoints(map, in.Sphere);
   if (error.empty())
@@ -99,7 +101,8 @@ std::string ExtractOrbifoldInputs(vtkPolyData* map, OrbifoldInputs& in)
   {
     in.InputIds[i] = ids ? static_cast<mobius::Index>(ids->GetTuple1(i)) : i;
   }
-  return error;
+  const mobius::Index coneIdValues[2] = { coneIds[0], coneIds[1] };
+  return error.empty() ? mobius::FindConeVertices(in.InputIds, coneIdValues, cones) : error;
 }
 
 template <typename ArrayType>
@@ -110,6 +113,19 @@ vtkSmartPointer<ArrayType> NamedArray(const char* name, vtkIdType tuples, int co
   array->SetNumberOfComponents(components);
   array->SetNumberOfTuples(tuples);
   return array;
+}
+
+// The core's parameters: the number of copies and the filter's progress over the last 75%
+// of its bar (the cones are found with the inputs).
+mobius::SphericalOrbifoldMapParameters OrbifoldParameters(vtkAlgorithm* filter, int copies)
+{
+  mobius::SphericalOrbifoldMapParameters parameters;
+  parameters.Copies = copies;
+  parameters.Progress = [filter](double fraction) {
+    filter->UpdateProgress(0.2 + 0.75 * fraction);
+    return !filter->GetAbortExecute();
+  };
+  return parameters;
 }
 
 // The output mesh with its point arrays (surface points, input point ids, copies) and cell
@@ -242,20 +258,14 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
   }
   this->UpdateProgress(0.2);
   OrbifoldInputs in;
-  mobius::SphericalOrbifoldMapParameters parameters;
-  const mobius::Index coneIds[2] = { this->ConeIds[0], this->ConeIds[1] };
-  std::string error = ExtractOrbifoldInputs(map, in);
-  if (!error.empty() ||
-    !(error = mobius::FindConeVertices(in.InputIds, coneIds, parameters.Cones)).empty())
+  mobius::SphericalOrbifoldMapParameters parameters =
+    OrbifoldParameters(this, this->NumberOfCopies);
+  const std::string error = ExtractOrbifoldInputs(map, this->ConeIds, in, parameters.Cones);
+  if (!error.empty())
   {
     vtkErrorMacro(<< "Cannot compute an orbifold map: " << error << ".");
     return 0;
   }
-  parameters.Copies = this->NumberOfCopies;
-  parameters.Progress = [this](double fraction) {
-    this->UpdateProgress(0.2 + 0.75 * fraction);
-    return !this->GetAbortExecute();
-  };
   const mobius::SphericalOrbifoldMapResult result =
     mobius::ComputeSphericalOrbifoldMap(in.Surface, in.Triangles, in.Sphere, parameters);
   if (this->GetAbortExecute())

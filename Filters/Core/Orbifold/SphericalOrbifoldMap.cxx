@@ -115,23 +115,14 @@ OrbifoldOutputMesh SelectOrbifoldOutput(const SphericalOrbifoldMapResult& result
   return mesh;
 }
 
-SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
-  const Triangles& triangles, const Points& plainMap,
-  const SphericalOrbifoldMapParameters& parameters)
+namespace
 {
-  SphericalOrbifoldMapResult result;
-  const int n = parameters.Copies;
-  const std::string problem =
-    CheckOrbifoldParameters(points.rows(), n, parameters.Cones[0], parameters.Cones[1]);
-  if (!problem.empty())
-  {
-    return Fail(result, problem);
-  }
-  auto progress = [&](double fraction) {
-    return !parameters.Progress || parameters.Progress(fraction);
-  };
-
-  // The mesh's own map, centered.
+// The mesh's own spherical map (the given one, or the conformal flow's), centered, and its
+// area distortion, into the result; or why there is none.
+std::string CenteredPlainMap(const Points& points, const Triangles& triangles,
+  const Points& plainMap, const SphericalOrbifoldMapParameters& parameters,
+  const ProgressCallback& progress, SphericalOrbifoldMapResult& result)
+{
   if (plainMap.rows() == 0)
   {
     ConformalMapParameters flow = parameters.Flow;
@@ -139,29 +130,34 @@ SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
     ConformalMapResult plain = ComputeSphericalConformalMap(points, triangles, flow);
     if (!plain.Success)
     {
-      return Fail(result, "the spherical map of the mesh failed: " + plain.Message);
+      return "the spherical map of the mesh failed: " + plain.Message;
     }
     result.PlainMap = plain.SpherePoints;
   }
   else if (plainMap.rows() != points.rows() || !plainMap.allFinite())
   {
-    return Fail(result, "the given spherical map does not have one finite point per vertex");
+    return "the given spherical map does not have one finite point per vertex";
   }
   else
   {
     result.PlainMap = plainMap.rowwise().normalized();
   }
   const Vector areas = TriangleAreas(points, triangles);
+  MobiusCenteringResult centering;
+  if (!CenterSphericalMap(result.PlainMap, triangles, areas, parameters.Centering, centering))
   {
-    MobiusCenteringResult centering;
-    if (!CenterSphericalMap(result.PlainMap, triangles, areas, parameters.Centering, centering))
-    {
-      return Fail(result, "centering the mesh's spherical map failed: " + centering.Error);
-    }
+    return "centering the mesh's spherical map failed: " + centering.Error;
   }
   result.PlainAreaDistortion = MeasureAreaDistortion(points, result.PlainMap, triangles);
+  return {};
+}
 
-  // Cones and the cut.
+// The cones (given, or two far-apart vertices), the shortest edge path between them and
+// the covering glued along it, into the result; `cutEdges` the path's length.
+std::string CutAndCover(const Points& points, const Triangles& triangles,
+  const SphericalOrbifoldMapParameters& parameters, SphericalOrbifoldMapResult& result,
+  size_t& cutEdges)
+{
   result.Cones[0] = parameters.Cones[0];
   result.Cones[1] = parameters.Cones[1];
   if (result.Cones[0] < 0)
@@ -171,35 +167,36 @@ SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
     result.Cones[1] = far.second;
     if (far.first < 0 || far.second < 0 || far.first == far.second)
     {
-      return Fail(result, "cannot find two distinct cone vertices on the mesh");
+      return "cannot find two distinct cone vertices on the mesh";
     }
   }
   const std::vector<Index> cut =
     ShortestEdgePath(points, triangles, result.Cones[0], result.Cones[1]);
   if (cut.empty())
   {
-    return Fail(result, "the two cone vertices are not connected by edges");
+    return "the two cone vertices are not connected by edges";
   }
-  if (!BuildCyclicCovering(points.rows(), triangles, cut, n, result.Covering))
+  cutEdges = cut.size() - 1;
+  if (!BuildCyclicCovering(points.rows(), triangles, cut, parameters.Copies, result.Covering))
   {
-    return Fail(result, "cannot build the covering: " + result.Covering.Error);
+    return "cannot build the covering: " + result.Covering.Error;
   }
-  if (!progress(0.35))
-  {
-    return Fail(result, "aborted");
-  }
+  return {};
+}
 
-  // The flow on the covering, from the lifted map (after its first step, whose result from
-  // the copies lying on top of each other is discarded).
-  const CyclicCovering& covering = result.Covering;
-  const Triangles& coveringTriangles = covering.CoveringTriangles;
+// The flow on the covering, from the lifted map (after its first step, whose result from
+// the copies lying on top of each other is discarded), into result.CoveringFlow and
+// result.CoveringMap.
+std::string FlowOnCovering(const Triangles& triangles, const Points& coveringPoints,
+  const SphericalOrbifoldMapParameters& parameters, const ProgressCallback& progress,
+  SphericalOrbifoldMapResult& result)
+{
   Points lifted;
   std::string liftError;
-  if (!LiftSphericalMapToCovering(result.PlainMap, triangles, covering, lifted, liftError))
+  if (!LiftSphericalMapToCovering(result.PlainMap, triangles, result.Covering, lifted, liftError))
   {
-    return Fail(result, liftError);
+    return liftError;
   }
-  const Points coveringPoints = covering.CoveringPoints(points);
   ConformalMapParameters flow = parameters.Flow;
   flow.MaximumNumberOfIterations = parameters.Flow.MaximumNumberOfIterations + 1;
   // The start is the lifted map, put in after the first step: a linear start would be
@@ -214,42 +211,84 @@ SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
     return !userHook || userHook(positions, iteration);
   };
   flow.Progress = [&](double f) { return progress(0.35 + 0.6 * f); };
-  result.CoveringFlow = ComputeSphericalConformalMap(coveringPoints, coveringTriangles, flow);
+  result.CoveringFlow =
+    ComputeSphericalConformalMap(coveringPoints, result.Covering.CoveringTriangles, flow);
   if (!result.CoveringFlow.Success)
   {
-    return Fail(result, "the conformal flow on the covering failed: " + result.CoveringFlow.Message);
+    return "the conformal flow on the covering failed: " + result.CoveringFlow.Message;
   }
   result.CoveringMap = result.CoveringFlow.SpherePoints;
+  return {};
+}
 
-  // Center with the covering's areas, then turn the cone axis to z.
+// The covering's map centered with the covering's areas, turned so that the cone axis is
+// z, and measured (symmetry, flips, area distortion).
+std::string CenterAndMeasureCovering(const Points& coveringPoints,
+  const SphericalOrbifoldMapParameters& parameters, SphericalOrbifoldMapResult& result)
+{
+  const CyclicCovering& covering = result.Covering;
+  const Triangles& coveringTriangles = covering.CoveringTriangles;
   const Vector coveringAreas = TriangleAreas(coveringPoints, coveringTriangles);
   if (!CenterSphericalMap(result.CoveringMap, coveringTriangles, coveringAreas,
         parameters.Centering, result.CoveringCentering))
   {
-    return Fail(result, "centering the covering's map failed: " + result.CoveringCentering.Error);
+    return "centering the covering's map failed: " + result.CoveringCentering.Error;
   }
   const Eigen::Vector3d a = result.CoveringMap.row(covering.ConeVertices[0]);
   const Eigen::Vector3d b = result.CoveringMap.row(covering.ConeVertices[1]);
   result.ConeAntipodality = (a + b).norm();
   if (!((b - a).norm() > 0.0))
   {
-    return Fail(result, "the covering's map sends both cones to the same point");
+    return "the covering's map sends both cones to the same point";
   }
   const Eigen::Matrix3d toZ = RotationTaking(b - a, Eigen::Vector3d::UnitZ());
   result.CoveringMap = (result.CoveringMap * toZ.transpose()).eval();
   result.Symmetry = MeasureCyclicSymmetry(
-    result.CoveringMap, covering.NextCopyVertex, Eigen::Vector3d::UnitZ(), n);
+    result.CoveringMap, covering.NextCopyVertex, Eigen::Vector3d::UnitZ(), parameters.Copies);
   result.FlippedTriangles =
     MeasureMapDistortion(coveringPoints, result.CoveringMap, coveringTriangles).FlippedTriangles;
   result.OrbifoldAreaDistortion =
     MeasureAreaDistortion(coveringPoints, result.CoveringMap, coveringTriangles);
+  return {};
+}
+}
+
+SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
+  const Triangles& triangles, const Points& plainMap,
+  const SphericalOrbifoldMapParameters& parameters)
+{
+  SphericalOrbifoldMapResult result;
+  const int n = parameters.Copies;
+  std::string error =
+    CheckOrbifoldParameters(points.rows(), n, parameters.Cones[0], parameters.Cones[1]);
+  const ProgressCallback progress = [&](double fraction) {
+    return !parameters.Progress || parameters.Progress(fraction);
+  };
+  size_t cutEdges = 0;
+  if (!error.empty() ||
+    !(error = CenteredPlainMap(points, triangles, plainMap, parameters, progress, result))
+       .empty() ||
+    !(error = CutAndCover(points, triangles, parameters, result, cutEdges)).empty())
+  {
+    return Fail(result, error);
+  }
+  if (!progress(0.35))
+  {
+    return Fail(result, "aborted");
+  }
+  const Points coveringPoints = result.Covering.CoveringPoints(points);
+  if (!(error = FlowOnCovering(triangles, coveringPoints, parameters, progress, result)).empty() ||
+    !(error = CenterAndMeasureCovering(coveringPoints, parameters, result)).empty())
+  {
+    return Fail(result, error);
+  }
   if (!progress(1.0))
   {
     return Fail(result, "aborted");
   }
   std::ostringstream s;
   s << n << "-fold orbifold map: cones " << result.Cones[0] << " and " << result.Cones[1]
-    << ", cut of " << cut.size() - 1 << " edges; symmetry error " << result.Symmetry.MaximumDistance
+    << ", cut of " << cutEdges << " edges; symmetry error " << result.Symmetry.MaximumDistance
     << ", std of log area ratio " << result.OrbifoldAreaDistortion.StdLogAreaRatio
     << " (plain map: " << result.PlainAreaDistortion.StdLogAreaRatio << ")";
   result.Message = s.str();
