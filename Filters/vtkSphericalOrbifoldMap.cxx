@@ -54,10 +54,175 @@ void AddIds(vtkFieldData* fieldData, const char* name, const std::vector<vtkIdTy
   fieldData->RemoveArray(name);
   fieldData->AddArray(array);
 }
+
+// The number of point ids a cone can name: the input's points, or more when the input is a
+// map whose `InputPointId` names points it dropped.
+vtkIdType InputIdCount(vtkPolyData* input, bool inputIsMap)
+{
+  vtkDataArray* inputIdArray =
+    inputIsMap ? input->GetPointData()->GetArray(mobius::vtk::InputPointIdArrayName) : nullptr;
+  vtkIdType idCount = input->GetNumberOfPoints();
+  if (inputIdArray)
+  {
+    idCount = std::max<vtkIdType>(idCount, static_cast<vtkIdType>(inputIdArray->GetRange(0)[1]) + 1);
+  }
+  return idCount;
+}
+
+// What the core needs of a spherical map: its sphere and surface points, its triangles and
+// the input's point id of each point (the map's own numbering where it carries none).
+struct OrbifoldInputs
+{
+  mobius::Points Sphere, Surface;
+  mobius::Triangles Triangles;
+  std::vector<mobius::Index> InputIds;
+};
+
+// ... and the mesh vertices of the cones named by point id.
+std::string ExtractOrbifoldInputs(
+  vtkPolyData* map, const vtkIdType coneIds[2], OrbifoldInputs& in, mobius::Index cones[2])
+{
+  std::string error = mobius::vtk::ExtractPoints(map, in.Sphere);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractTriangles(map, in.Triangles);
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractSurfacePoints(map, in.Surface);
+  }
+  if (error.empty() && in.Triangles.rows() == 0)
+  {
+    error = "the input has no triangles";
+  }
+  in.InputIds.resize(static_cast<size_t>(in.Sphere.rows()));
+  vtkDataArray* ids = map->GetPointData()->GetArray(mobius::vtk::InputPointIdArrayName);
+  for (vtkIdType i = 0; error.empty() && i < in.Sphere.rows(); ++i)
+  {
+    in.InputIds[i] = ids ? static_cast<mobius::Index>(ids->GetTuple1(i)) : i;
+  }
+  const mobius::Index coneIdValues[2] = { coneIds[0], coneIds[1] };
+  return error.empty() ? mobius::FindConeVertices(in.InputIds, coneIdValues, cones) : error;
+}
+
+template <typename ArrayType>
+vtkSmartPointer<ArrayType> NamedArray(const char* name, vtkIdType tuples, int components = 1)
+{
+  vtkSmartPointer<ArrayType> array = vtkSmartPointer<ArrayType>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+// The core's parameters: the number of copies and the filter's progress over the last 75%
+// of its bar (the cones are found with the inputs).
+mobius::SphericalOrbifoldMapParameters OrbifoldParameters(vtkAlgorithm* filter, int copies)
+{
+  mobius::SphericalOrbifoldMapParameters parameters;
+  parameters.Copies = copies;
+  parameters.Progress = [filter](double fraction) {
+    filter->UpdateProgress(0.2 + 0.75 * fraction);
+    return !filter->GetAbortExecute();
+  };
+  return parameters;
+}
+
+// The output mesh with its point arrays (surface points, input point ids, copies) and cell
+// arrays (surface areas, copies).
+void WriteOrbifoldMesh(
+  vtkPolyData* output, const mobius::OrbifoldOutputMesh& mesh, const OrbifoldInputs& in)
+{
+  const vtkIdType n = static_cast<vtkIdType>(mesh.SourceVertex.size());
+  auto surfacePoints =
+    NamedArray<vtkDoubleArray>(mobius::vtk::SurfacePointsArrayName, n, 3);
+  auto pointIds = NamedArray<vtkIdTypeArray>(mobius::vtk::InputPointIdArrayName, n);
+  auto pointCopy = NamedArray<vtkIntArray>("Copy", n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    surfacePoints->SetTuple3(i, mesh.SurfacePoints(i, 0), mesh.SurfacePoints(i, 1),
+      mesh.SurfacePoints(i, 2));
+    pointIds->SetValue(i, in.InputIds[mesh.SourceVertex[i]]);
+    pointCopy->SetValue(i, mesh.VertexCopy[i]);
+  }
+  const vtkIdType cells = mesh.OutputTriangles.rows();
+  auto cellArea = NamedArray<vtkDoubleArray>(mobius::vtk::SurfaceAreaArrayName, cells);
+  auto cellCopy = NamedArray<vtkIntArray>("Copy", cells);
+  for (vtkIdType t = 0; t < cells; ++t)
+  {
+    cellArea->SetValue(t, mesh.TriangleAreas[t]);
+    cellCopy->SetValue(t, mesh.TriangleCopy[t]);
+  }
+  output->Initialize();
+  mobius::vtk::SetPoints(output, mesh.SpherePoints);
+  mobius::vtk::SetTriangles(output, mesh.OutputTriangles);
+  output->GetPointData()->AddArray(surfacePoints);
+  output->GetPointData()->AddArray(pointIds);
+  output->GetPointData()->AddArray(pointCopy);
+  output->GetCellData()->AddArray(cellArea);
+  output->GetCellData()->AddArray(cellCopy);
+}
+
+// The map's own field data, then the orbifold map's cones, cut and measures.
+void WriteOrbifoldFields(vtkFieldData* fields, vtkFieldData* mapFields, int copies,
+  const mobius::SphericalOrbifoldMapResult& result, const std::vector<mobius::Index>& inputIds)
+{
+  fields->PassData(mapFields);
+  mobius::vtk::SetFieldInteger(fields, "NumberOfCopies", copies);
+  AddIds(fields, "ConeIds", { inputIds[result.Cones[0]], inputIds[result.Cones[1]] }, 2);
+  std::vector<vtkIdType> cut;
+  for (const mobius::Index v : result.Covering.CutPath)
+  {
+    cut.push_back(inputIds[v]);
+  }
+  AddIds(fields, "CutPathPointIds", cut);
+  mobius::vtk::SetFieldValue(fields, "SymmetryError", result.Symmetry.MaximumDistance);
+  mobius::vtk::SetFieldValue(fields, "ConeAntipodality", result.ConeAntipodality);
+  mobius::vtk::SetFieldCount(
+    fields, "FlippedTriangles", static_cast<vtkIdType>(result.FlippedTriangles));
+  mobius::vtk::SetFieldValue(fields, "StdLogAreaRatio", result.OrbifoldAreaDistortion.StdLogAreaRatio);
+  mobius::vtk::SetFieldValue(fields, "PlainStdLogAreaRatio", result.PlainAreaDistortion.StdLogAreaRatio);
+  mobius::vtk::SetFieldInteger(fields, "ConformalFlowIterations", result.CoveringFlow.Iterations);
+  mobius::vtk::SetFieldInteger(
+    fields, "ConformalFlowConverged", result.CoveringFlow.Converged ? 1 : 0);
+}
 }
 
 //------------------------------------------------------------------------------
 vtkSphericalOrbifoldMap::vtkSphericalOrbifoldMap() = default;
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkSphericalOrbifoldMap::SphericalMapOf(
+  vtkPolyData* input, bool inputIsMap)
+{
+  vtkSmartPointer<vtkPolyData> map = vtkSmartPointer<vtkPolyData>::New();
+  map->ShallowCopy(input);
+  if (inputIsMap)
+  {
+    return map;
+  }
+  vtkNew<vtkSphericalConformalMap> conformal;
+  conformal->SetInputData(map);
+  std::string error;
+  std::vector<std::string> warnings;
+  vtkSmartPointer<vtkPolyData> conformalMap =
+    this->RunInternalFilter(conformal, 0.0, 0.2, error, warnings);
+  for (const auto& warning : warnings)
+  {
+    vtkWarningMacro(<< "conformal map: " << warning);
+  }
+  if (!conformalMap)
+  {
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< "Cannot compute an orbifold map: conformal map: "
+                    << (error.empty() ? "no output" : error));
+    }
+    return nullptr;
+  }
+  map->ShallowCopy(conformalMap);
+  return map;
+}
 
 //------------------------------------------------------------------------------
 int vtkSphericalOrbifoldMap::ComputeOutput(
@@ -78,104 +243,31 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
   // The parameters first: a bad one fails at once, before any flow runs. Cones are named
   // by `InputPointId` when the input is a map carrying it, else by the input's point ids.
   const bool inputIsMap = IsSphericalMap(input);
-  vtkDataArray* inputIdArray = inputIsMap
-    ? input->GetPointData()->GetArray(mobius::vtk::InputPointIdArrayName)
-    : nullptr;
-  vtkIdType idCount = input->GetNumberOfPoints();
-  if (inputIdArray)
-  {
-    idCount = std::max<vtkIdType>(idCount, static_cast<vtkIdType>(inputIdArray->GetRange(0)[1]) + 1);
-  }
-  const std::string problem = mobius::CheckOrbifoldParameters(
-    idCount, this->NumberOfCopies, this->ConeIds[0], this->ConeIds[1]);
+  const std::string problem = mobius::CheckOrbifoldParameters(InputIdCount(input, inputIsMap),
+    this->NumberOfCopies, this->ConeIds[0], this->ConeIds[1]);
   if (!problem.empty())
   {
     vtkErrorMacro(<< "Cannot compute an orbifold map: " << problem << ".");
     return 0;
   }
-
   // The surface's own spherical map (with its repairs), unless the input is one.
-  vtkSmartPointer<vtkPolyData> map = vtkSmartPointer<vtkPolyData>::New();
-  map->ShallowCopy(input);
-  if (!inputIsMap)
+  vtkSmartPointer<vtkPolyData> map = this->SphericalMapOf(input, inputIsMap);
+  if (!map)
   {
-    vtkNew<vtkSphericalConformalMap> conformal;
-    conformal->SetInputData(map);
-    std::string error;
-    std::vector<std::string> warnings;
-    vtkSmartPointer<vtkPolyData> conformalMap =
-      this->RunInternalFilter(conformal, 0.0, 0.2, error, warnings);
-    for (const auto& warning : warnings)
-    {
-      vtkWarningMacro(<< "conformal map: " << warning);
-    }
-    if (!conformalMap)
-    {
-      if (!this->GetAbortExecute())
-      {
-        vtkErrorMacro(<< "Cannot compute an orbifold map: conformal map: "
-                      << (error.empty() ? "no output" : error));
-      }
-      return 0;
-    }
-    map->ShallowCopy(conformalMap);
-  }
-  this->UpdateProgress(0.2);
-
-  mobius::Points sphere, surface;
-  mobius::Triangles triangles;
-  std::string error = mobius::vtk::ExtractPoints(map, sphere);
-  if (error.empty())
-  {
-    error = mobius::vtk::ExtractTriangles(map, triangles);
-  }
-  if (error.empty())
-  {
-    error = mobius::vtk::ExtractSurfacePoints(map, surface);
-  }
-  if (error.empty() && triangles.rows() == 0)
-  {
-    error = "the input has no triangles";
-  }
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< "Cannot compute an orbifold map: " << error);
     return 0;
   }
-  // The input's point id of each map point (the map's own numbering for a map input).
-  std::vector<vtkIdType> inputIds(static_cast<size_t>(sphere.rows()));
-  vtkDataArray* ids = map->GetPointData()->GetArray(mobius::vtk::InputPointIdArrayName);
-  for (vtkIdType i = 0; i < sphere.rows(); ++i)
+  this->UpdateProgress(0.2);
+  OrbifoldInputs in;
+  mobius::SphericalOrbifoldMapParameters parameters =
+    OrbifoldParameters(this, this->NumberOfCopies);
+  const std::string error = ExtractOrbifoldInputs(map, this->ConeIds, in, parameters.Cones);
+  if (!error.empty())
   {
-    inputIds[i] = ids ? static_cast<vtkIdType>(ids->GetTuple1(i)) : i;
+    vtkErrorMacro(<< "Cannot compute an orbifold map: " << error << ".");
+    return 0;
   }
-
-  mobius::SphericalOrbifoldMapParameters parameters;
-  parameters.Copies = this->NumberOfCopies;
-  for (int c = 0; c < 2 && this->ConeIds[0] >= 0; ++c)
-  {
-    parameters.Cones[c] = -1;
-    for (vtkIdType i = 0; i < sphere.rows(); ++i)
-    {
-      if (inputIds[i] == this->ConeIds[c])
-      {
-        parameters.Cones[c] = i;
-      }
-    }
-    if (parameters.Cones[c] < 0)
-    {
-      vtkErrorMacro(<< "Cannot compute an orbifold map: cone " << this->ConeIds[c]
-                    << " is not a vertex of the repaired surface (an unused or duplicate "
-                       "point the conformal map dropped).");
-      return 0;
-    }
-  }
-  parameters.Progress = [this](double fraction) {
-    this->UpdateProgress(0.2 + 0.75 * fraction);
-    return !this->GetAbortExecute();
-  };
   const mobius::SphericalOrbifoldMapResult result =
-    mobius::ComputeSphericalOrbifoldMap(surface, triangles, sphere, parameters);
+    mobius::ComputeSphericalOrbifoldMap(in.Surface, in.Triangles, in.Sphere, parameters);
   if (this->GetAbortExecute())
   {
     return 1;
@@ -190,94 +282,10 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
     vtkWarningMacro(<< "The orbifold map has " << result.FlippedTriangles
                     << " flipped triangles on the covering.");
   }
-
-  // One copy (copy 0: its own vertices and the next copy's along the cut's left side) or
-  // the whole covering, with the points renumbered in order of use.
-  const mobius::CyclicCovering& covering = result.Covering;
-  const mobius::Index F = triangles.rows();
-  const mobius::Index outputTriangles = this->OutputCovering ? covering.CoveringTriangles.rows() : F;
-  std::vector<vtkIdType> newId(covering.SourceVertex.size(), -1);
-  std::vector<mobius::Index> usedVertices;
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkIntArray> cellCopy;
-  cellCopy->SetName("Copy");
-  vtkNew<vtkDoubleArray> cellArea;
-  cellArea->SetName(mobius::vtk::SurfaceAreaArrayName);
-  const mobius::Vector areas = [&] {
-    mobius::Vector a(F);
-    for (mobius::Index t = 0; t < F; ++t)
-    {
-      const Eigen::Vector3d p0 = surface.row(triangles(t, 0)), p1 = surface.row(triangles(t, 1)),
-                            p2 = surface.row(triangles(t, 2));
-      a[t] = 0.5 * (p1 - p0).cross(p2 - p0).norm();
-    }
-    return a;
-  }();
-  for (mobius::Index t = 0; t < outputTriangles; ++t)
-  {
-    vtkIdType cell[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      const mobius::Index w = covering.CoveringTriangles(t, c);
-      if (newId[w] < 0)
-      {
-        newId[w] = static_cast<vtkIdType>(usedVertices.size());
-        usedVertices.push_back(w);
-      }
-      cell[c] = newId[w];
-    }
-    polys->InsertNextCell(3, cell);
-    cellCopy->InsertNextValue(static_cast<int>(t / F));
-    cellArea->InsertNextValue(areas[t % F]);
-  }
-  mobius::Points outputPoints(static_cast<mobius::Index>(usedVertices.size()), 3);
-  vtkNew<vtkDoubleArray> surfacePoints;
-  surfacePoints->SetName(mobius::vtk::SurfacePointsArrayName);
-  surfacePoints->SetNumberOfComponents(3);
-  surfacePoints->SetNumberOfTuples(static_cast<vtkIdType>(usedVertices.size()));
-  vtkNew<vtkIdTypeArray> pointIds;
-  pointIds->SetName(mobius::vtk::InputPointIdArrayName);
-  pointIds->SetNumberOfTuples(static_cast<vtkIdType>(usedVertices.size()));
-  vtkNew<vtkIntArray> pointCopy;
-  pointCopy->SetName("Copy");
-  pointCopy->SetNumberOfTuples(static_cast<vtkIdType>(usedVertices.size()));
-  for (size_t i = 0; i < usedVertices.size(); ++i)
-  {
-    const mobius::Index w = usedVertices[i];
-    const mobius::Index v = covering.SourceVertex[w];
-    outputPoints.row(static_cast<mobius::Index>(i)) = result.CoveringMap.row(w);
-    surfacePoints->SetTuple3(static_cast<vtkIdType>(i), surface(v, 0), surface(v, 1), surface(v, 2));
-    pointIds->SetValue(static_cast<vtkIdType>(i), inputIds[v]);
-    pointCopy->SetValue(static_cast<vtkIdType>(i), covering.VertexCopy[w]);
-  }
-
-  output->Initialize();
-  mobius::vtk::SetPoints(output, outputPoints);
-  output->SetPolys(polys);
-  output->GetPointData()->AddArray(surfacePoints);
-  output->GetPointData()->AddArray(pointIds);
-  output->GetPointData()->AddArray(pointCopy);
-  output->GetCellData()->AddArray(cellArea);
-  output->GetCellData()->AddArray(cellCopy);
-  vtkFieldData* fields = output->GetFieldData();
-  fields->PassData(map->GetFieldData());
-  mobius::vtk::SetFieldInteger(fields, "NumberOfCopies", this->NumberOfCopies);
-  AddIds(fields, "ConeIds", { inputIds[result.Cones[0]], inputIds[result.Cones[1]] }, 2);
-  std::vector<vtkIdType> cut;
-  for (const mobius::Index v : covering.CutPath)
-  {
-    cut.push_back(inputIds[v]);
-  }
-  AddIds(fields, "CutPathPointIds", cut);
-  mobius::vtk::SetFieldValue(fields, "SymmetryError", result.Symmetry.MaximumDistance);
-  mobius::vtk::SetFieldValue(fields, "ConeAntipodality", result.ConeAntipodality);
-  mobius::vtk::SetFieldCount(
-    fields, "FlippedTriangles", static_cast<vtkIdType>(result.FlippedTriangles));
-  mobius::vtk::SetFieldValue(fields, "StdLogAreaRatio", result.OrbifoldAreaDistortion.StdLogAreaRatio);
-  mobius::vtk::SetFieldValue(fields, "PlainStdLogAreaRatio", result.PlainAreaDistortion.StdLogAreaRatio);
-  mobius::vtk::SetFieldInteger(fields, "ConformalFlowIterations", result.CoveringFlow.Iterations);
-  mobius::vtk::SetFieldInteger(
-    fields, "ConformalFlowConverged", result.CoveringFlow.Converged ? 1 : 0);
+  WriteOrbifoldMesh(output,
+    mobius::SelectOrbifoldOutput(result, in.Surface, in.Triangles, this->OutputCovering), in);
+  WriteOrbifoldFields(
+    output->GetFieldData(), map->GetFieldData(), this->NumberOfCopies, result, in.InputIds);
   this->UpdateProgress(1.0);
   return 1;
 }

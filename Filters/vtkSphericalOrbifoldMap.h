@@ -98,6 +98,10 @@ protected:
   vtkTypeBool OutputCovering = false;
 
 private:
+  // The input's own spherical map (a map input as it is, a surface through the conformal
+  // map); nullptr after reporting why there is none.
+  vtkSmartPointer<vtkPolyData> SphericalMapOf(vtkPolyData* input, bool inputIsMap);
+
   vtkSphericalOrbifoldMap(const vtkSphericalOrbifoldMap&) = delete;
   void operator=(const vtkSphericalOrbifoldMap&) = delete;
 };

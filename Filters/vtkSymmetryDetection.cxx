@@ -61,6 +61,168 @@ void AddTuples(vtkFieldData* fieldData, const char* name, int components,
   fieldData->RemoveArray(name);
   fieldData->AddArray(array);
 }
+
+// The centered map's surface, sphere and triangles (with their surface areas) and the
+// reflected map's sphere points, or why they cannot be read.
+struct SymmetryGeometry
+{
+  mobius::Points Surface, Sphere, ReflectedSphere;
+  mobius::Triangles Triangles;
+  mobius::Vector Areas;
+};
+
+std::string ExtractSymmetryGeometry(
+  vtkPolyData* centered, vtkPolyData* reflected, SymmetryGeometry& geometry)
+{
+  std::string error = mobius::vtk::ExtractSurfacePoints(centered, geometry.Surface);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractSphericalMap(
+      centered, false, geometry.Sphere, geometry.Triangles, geometry.Areas);
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractPoints(reflected, geometry.ReflectedSphere);
+  }
+  return error;
+}
+
+// Where the symmetric map puts each vertex: a triangle of `triangles` and barycentric
+// coordinates in it.
+std::string LocationsOf(vtkPolyData* symmetric, const mobius::Triangles& triangles,
+  mobius::vtk::SurfaceLocations& locations)
+{
+  vtkDataArray* cells = symmetric->GetPointData()->GetArray("TargetCellId");
+  vtkDataArray* barycentric = symmetric->GetPointData()->GetArray("TargetBarycentric");
+  if (!cells || !barycentric)
+  {
+    return "the symmetric map lacks TargetCellId or TargetBarycentric";
+  }
+  const vtkIdType n = symmetric->GetNumberOfPoints();
+  locations.LocatedTriangles = &triangles;
+  locations.Triangle.resize(n);
+  locations.Barycentric.resize(n);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    locations.Triangle[v] = static_cast<mobius::Index>(cells->GetComponent(v, 0));
+    barycentric->GetTuple(v, locations.Barycentric[v].data());
+  }
+  return std::string();
+}
+
+// The symmetric map as triangles and barycentric coordinates on the centered map, made exact
+// where the spherical map is exactly symmetric (VertexSnapping.h; `snapped` vertices).
+std::string LocateSymmetricMap(vtkPolyData* centered, vtkPolyData* reflected,
+  vtkPolyData* symmetric, double snapTolerance, SymmetryGeometry& geometry,
+  mobius::vtk::SurfaceLocations& locations, mobius::Index& snapped)
+{
+  std::string error = ExtractSymmetryGeometry(centered, reflected, geometry);
+  if (error.empty())
+  {
+    error = LocationsOf(symmetric, geometry.Triangles, locations);
+  }
+  if (error.empty() && snapTolerance > 0)
+  {
+    snapped = mobius::SnapToCoincidentVertices(geometry.ReflectedSphere, geometry.Sphere,
+      geometry.Triangles, snapTolerance, locations.Triangle, locations.Barycentric, error);
+  }
+  return error.empty() && snapped < 0 ? "the sphere cannot be searched" : error;
+}
+
+// The reflective registration's candidates (CandidateTransforms and their correlation
+// coefficients), described by the core.
+std::string MirrorCandidatesOf(vtkPolyData* reflected, mobius::MirrorCandidates& candidates)
+{
+  vtkDataArray* transforms = reflected->GetFieldData()->GetArray("CandidateTransforms");
+  vtkDataArray* coefficients =
+    reflected->GetFieldData()->GetArray("CandidateCorrelationCoefficients");
+  std::vector<Eigen::Matrix3d> reflections;
+  std::vector<double> correlations;
+  for (vtkIdType c = 0; transforms && coefficients && c < transforms->GetNumberOfTuples(); ++c)
+  {
+    Matrix3 transform;
+    transforms->GetTuple(c, transform.data());
+    reflections.push_back(transform);
+  }
+  for (vtkIdType c = 0; transforms && coefficients && c < coefficients->GetNumberOfTuples(); ++c)
+  {
+    correlations.push_back(coefficients->GetComponent(c, 0));
+  }
+  return mobius::DescribeMirrorCandidates(reflections, correlations, candidates);
+}
+
+// The refinement's or dense correspondence's own field data (candidates, residuals), beside
+// the arrays the assembly wrote.
+void AddStageFields(vtkPolyData* assembled, vtkPolyData* symmetric)
+{
+  vtkFieldData* stageFields = symmetric->GetFieldData();
+  for (int a = 0; a < stageFields->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = stageFields->GetAbstractArray(a);
+    if (array->GetName() && !assembled->GetFieldData()->HasArray(array->GetName()))
+    {
+      assembled->GetFieldData()->AddArray(array);
+    }
+  }
+}
+
+mobius::Points MappedPointsOf(vtkPolyData* assembled)
+{
+  vtkDataArray* mapped = assembled->GetPointData()->GetArray("MappedPoints");
+  const vtkIdType n = assembled->GetNumberOfPoints();
+  mobius::Points mirrorPoints(n, 3);
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    double point[3];
+    mapped->GetTuple(v, point);
+    mirrorPoints.row(v) << point[0], point[1], point[2];
+  }
+  return mirrorPoints;
+}
+
+// The symmetric map assembled again from the (snapped) locations into `output`, so that
+// every output array agrees with the snapped map, with the stage's own field data. Returns
+// a warning about arrays that could not be carried, or an empty string.
+std::string AssembleSymmetricMap(vtkPolyData* output, vtkPolyData* reflected,
+  vtkPolyData* centered, vtkPolyData* symmetric, const mobius::vtk::SurfaceLocations& locations)
+{
+  vtkNew<vtkPolyData> assembled;
+  const std::string arrayWarning =
+    mobius::vtk::AssembleCorrespondence(reflected, centered, locations, false, assembled);
+  AddStageFields(assembled, symmetric);
+  output->ShallowCopy(assembled);
+  return arrayWarning;
+}
+
+void AddAsymmetryArray(vtkPolyData* output, const mobius::Vector& asymmetry)
+{
+  vtkNew<vtkDoubleArray> asymmetryArray;
+  asymmetryArray->SetName("Asymmetry");
+  asymmetryArray->SetNumberOfTuples(asymmetry.size());
+  for (vtkIdType v = 0; v < asymmetry.size(); ++v)
+  {
+    asymmetryArray->SetValue(v, asymmetry(v));
+  }
+  output->GetPointData()->AddArray(asymmetryArray);
+  output->GetPointData()->SetActiveScalars("Asymmetry");
+}
+
+// The distance and the plane of every candidate reflection, best first, and the asymmetry's
+// mean and maximum.
+void WriteSymmetryFields(vtkFieldData* fieldData, const mobius::MirrorCandidates& candidates,
+  const mobius::Vector& asymmetry)
+{
+  const Matrix3 best = candidates.Best;
+  mobius::vtk::SetFieldValue(fieldData, "SymmetryDistance", candidates.Distances[0]);
+  AddTuples(fieldData, "CandidateSymmetryDistances", 1, candidates.Distances);
+  mobius::vtk::SetFieldValues(fieldData, "Reflection", best.data(), 9);
+  mobius::vtk::SetFieldValues(
+    fieldData, "MirrorPlaneNormal", candidates.BestPlane.Normal.data(), 3);
+  mobius::vtk::SetFieldValue(fieldData, "MirrorPlaneTwist", candidates.BestPlane.Twist);
+  AddTuples(fieldData, "CandidateMirrorPlaneNormals", 3, candidates.Normals);
+  mobius::vtk::SetFieldValue(fieldData, "MeanAsymmetry", asymmetry.mean());
+  mobius::vtk::SetFieldValue(fieldData, "MaximumAsymmetry", asymmetry.maxCoeff());
+}
 }
 
 //------------------------------------------------------------------------------
@@ -99,25 +261,71 @@ int vtkSymmetryDetection::ComputeOutput(
                   << " (it is " << this->Resolution << ").");
     return 0;
   }
+  vtkSmartPointer<vtkPolyData> centered = this->CenteredMapOf(input);
+  // Resolved once, so that every stage runs with the same count.
+  const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
+  vtkSmartPointer<vtkPolyData> reflected =
+    centered ? this->SelfRegister(centered, threads) : nullptr;
+  const bool refine = reflected && this->RefinementApplies(centered);
+  vtkSmartPointer<vtkPolyData> symmetric =
+    reflected ? this->SymmetricMap(reflected, centered, threads, refine) : nullptr;
+  if (!symmetric)
+  {
+    return 0;
+  }
+  SymmetryGeometry geometry;
+  mobius::vtk::SurfaceLocations locations;
+  mobius::MirrorCandidates candidates;
+  mobius::Index snapped = 0;
+  std::string error = LocateSymmetricMap(
+    centered, reflected, symmetric, this->SnapTolerance, geometry, locations, snapped);
+  if (!error.empty() || !(error = MirrorCandidatesOf(reflected, candidates)).empty())
+  {
+    vtkErrorMacro(<< "Cannot detect symmetry: " << error << ".");
+    return 0;
+  }
+  const std::string arrayWarning =
+    AssembleSymmetricMap(output, reflected, centered, symmetric, locations);
+  if (!arrayWarning.empty())
+  {
+    vtkWarningMacro(<< arrayWarning << ".");
+  }
+  const mobius::Vector asymmetry = mobius::RelativeMirrorAsymmetry(geometry.Surface,
+    geometry.Triangles, geometry.Areas, locations.Triangle, locations.Barycentric,
+    MappedPointsOf(output));
+  AddAsymmetryArray(output, asymmetry);
+  vtkFieldData* fieldData = output->GetFieldData();
+  WriteSymmetryFields(fieldData, candidates, asymmetry);
+  mobius::vtk::SetFieldInteger(fieldData, "SymmetryCentered", this->Centering ? 1 : 0);
+  mobius::vtk::SetFieldInteger(fieldData, "SymmetryRefined", refine ? 1 : 0);
+  mobius::vtk::SetFieldCount(fieldData, "SnappedVertices", static_cast<vtkIdType>(snapped));
+  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
-  // Each stage's result, or its error as this filter's.
-  auto run = [this](vtkPolyDataAlgorithm* filter, const char* stage, double begin, double end) {
-    std::string error;
-    std::vector<std::string> warnings;
-    vtkSmartPointer<vtkPolyData> result =
-      this->RunInternalFilter(filter, begin, end, error, warnings);
-    for (const auto& warning : warnings)
-    {
-      vtkWarningMacro(<< stage << ": " << warning);
-    }
-    if (!result && !this->GetAbortExecute())
-    {
-      vtkErrorMacro(<< "Cannot detect symmetry: " << stage << ": "
-                    << (error.empty() ? "the stage produced no output" : error));
-    }
-    return this->GetAbortExecute() ? nullptr : result;
-  };
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkSymmetryDetection::RunStage(
+  vtkPolyDataAlgorithm* filter, const char* stage, double begin, double end)
+{
+  std::string error;
+  std::vector<std::string> warnings;
+  vtkSmartPointer<vtkPolyData> result = this->RunInternalFilter(filter, begin, end, error, warnings);
+  for (const auto& warning : warnings)
+  {
+    vtkWarningMacro(<< stage << ": " << warning);
+  }
+  if (!result && !this->GetAbortExecute())
+  {
+    vtkErrorMacro(<< "Cannot detect symmetry: " << stage << ": "
+                  << (error.empty() ? "the stage produced no output" : error));
+  }
+  return this->GetAbortExecute() ? nullptr : result;
+}
 
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkSymmetryDetection::CenteredMapOf(vtkPolyData* input)
+{
   // The map and its centering as every job makes them (MobiusPipeline.h), on a copy: the
   // pipeline's input object stays out of the internal pipeline.
   vtkSmartPointer<vtkPolyData> copy = vtkSmartPointer<vtkPolyData>::New();
@@ -149,18 +357,16 @@ int vtkSymmetryDetection::ComputeOutput(
   {
     vtkWarningMacro(<< warning);
   }
-  if (this->GetAbortExecute())
-  {
-    return 0;
-  }
-  if (!ready)
+  if (!ready && !this->GetAbortExecute())
   {
     vtkErrorMacro(<< "Cannot detect symmetry: " << stageError);
-    return 0;
   }
+  return ready && !this->GetAbortExecute() ? centered : nullptr;
+}
 
-  // Resolved once, so that every stage runs with the same count.
-  const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkSymmetryDetection::SelfRegister(vtkPolyData* centered, int threads)
+{
   // The map against itself, orientation-reversing transforms only: the mirror symmetries.
   vtkNew<vtkSO3Register> registration;
   registration->SetSourceData(centered);
@@ -171,12 +377,12 @@ int vtkSymmetryDetection::ComputeOutput(
   registration->SetTransformModeToReflections();
   registration->CheckMirroringOff(); // the mesh against itself: the identity always fits best
   registration->SetNumberOfThreads(threads);
-  vtkSmartPointer<vtkPolyData> reflected = run(registration, "reflective registration", 0.35, 0.5);
-  if (!reflected)
-  {
-    return 0;
-  }
+  return this->RunStage(registration, "reflective registration", 0.35, 0.5);
+}
 
+//------------------------------------------------------------------------------
+bool vtkSymmetryDetection::RefinementApplies(vtkPolyData* centered)
+{
   // The refinement samples BasisSize eigenfunctions on about twice as many vertices.
   const bool refine =
     this->Refine && mobius::RefinementApplies(centered->GetNumberOfPoints(), this->BasisSize);
@@ -186,162 +392,35 @@ int vtkSymmetryDetection::ComputeOutput(
                     << " vertices, fewer than twice the BasisSize (" << this->BasisSize
                     << "); the symmetric map is the Moebius map.");
   }
-  vtkSmartPointer<vtkPolyData> symmetric;
-  if (refine)
-  {
-    // The transforms are reflections, so the refinement expects an orientation-reversing
-    // map and repairs one that comes out orientation-preserving (e.g. the identity).
-    vtkNew<vtkCorrespondenceRefinement> refinement;
-    refinement->SetSourceData(reflected);
-    refinement->SetTargetData(centered);
-    refinement->SetBasisSize(this->BasisSize);
-    refinement->SetStartBasisSize(
-      mobius::ClampToBasisSize(refinement->GetStartBasisSize(), this->BasisSize));
-    refinement->SetGeometricPolish(this->GeometricPolish);
-    refinement->SetOutputGeometryToSource();
-    refinement->SetCandidateCriterionToOrthogonality();
-    refinement->SetNumberOfThreads(threads);
-    symmetric = run(refinement, "refinement", 0.5, 0.95);
-  }
-  else
+  return refine;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> vtkSymmetryDetection::SymmetricMap(
+  vtkPolyData* reflected, vtkPolyData* centered, int threads, bool refine)
+{
+  if (!refine)
   {
     vtkNew<vtkDenseCorrespondence> correspondence;
     correspondence->SetSourceData(reflected);
     correspondence->SetTargetData(centered);
     correspondence->SetOutputGeometryToSource();
     correspondence->SetNumberOfThreads(threads);
-    symmetric = run(correspondence, "dense correspondence", 0.5, 0.95);
+    return this->RunStage(correspondence, "dense correspondence", 0.5, 0.95);
   }
-  if (!symmetric)
-  {
-    return 0;
-  }
-
-  // The map as triangles and barycentric coordinates, made exact where the spherical map is
-  // exactly symmetric (VertexSnapping.h), and assembled again so that every output array
-  // agrees with the snapped map.
-  mobius::Points surface, sphere, reflectedSphere, mirrorPoints;
-  mobius::Triangles triangles;
-  mobius::Vector areas;
-  std::string error = mobius::vtk::ExtractSurfacePoints(centered, surface);
-  if (error.empty())
-  {
-    error = mobius::vtk::ExtractSphericalMap(centered, false, sphere, triangles, areas);
-  }
-  if (error.empty())
-  {
-    error = mobius::vtk::ExtractPoints(reflected, reflectedSphere);
-  }
-  vtkDataArray* cells = symmetric->GetPointData()->GetArray("TargetCellId");
-  vtkDataArray* barycentric = symmetric->GetPointData()->GetArray("TargetBarycentric");
-  if (error.empty() && (!cells || !barycentric))
-  {
-    error = "the symmetric map lacks TargetCellId or TargetBarycentric";
-  }
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< "Cannot detect symmetry: " << error << ".");
-    return 0;
-  }
-  const vtkIdType n = symmetric->GetNumberOfPoints();
-  mobius::vtk::SurfaceLocations locations;
-  locations.LocatedTriangles = &triangles;
-  locations.Triangle.resize(n);
-  locations.Barycentric.resize(n);
-  for (vtkIdType v = 0; v < n; ++v)
-  {
-    locations.Triangle[v] = static_cast<mobius::Index>(cells->GetComponent(v, 0));
-    barycentric->GetTuple(v, locations.Barycentric[v].data());
-  }
-  mobius::Index snapped = 0;
-  if (this->SnapTolerance > 0)
-  {
-    snapped = mobius::SnapToCoincidentVertices(reflectedSphere, sphere, triangles,
-      this->SnapTolerance, locations.Triangle, locations.Barycentric, error);
-    if (snapped < 0)
-    {
-      vtkErrorMacro(<< "Cannot detect symmetry: " << error << ".");
-      return 0;
-    }
-  }
-  vtkNew<vtkPolyData> assembled;
-  const std::string arrayWarning =
-    mobius::vtk::AssembleCorrespondence(reflected, centered, locations, false, assembled);
-  if (!arrayWarning.empty())
-  {
-    vtkWarningMacro(<< arrayWarning << ".");
-  }
-  // The refinement's or dense correspondence's own field data (candidates, residuals).
-  vtkFieldData* stageFields = symmetric->GetFieldData();
-  for (int a = 0; a < stageFields->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = stageFields->GetAbstractArray(a);
-    if (array->GetName() && !assembled->GetFieldData()->HasArray(array->GetName()))
-    {
-      assembled->GetFieldData()->AddArray(array);
-    }
-  }
-  vtkDataArray* mapped = assembled->GetPointData()->GetArray("MappedPoints");
-  mirrorPoints.resize(n, 3);
-  for (vtkIdType v = 0; v < n; ++v)
-  {
-    double point[3];
-    mapped->GetTuple(v, point);
-    mirrorPoints.row(v) << point[0], point[1], point[2];
-  }
-  const double scale = std::sqrt(areas.sum());
-  const mobius::Vector asymmetry =
-    mobius::MirrorAsymmetry(surface, triangles, locations.Triangle, locations.Barycentric, mirrorPoints) /
-    scale;
-
-  output->ShallowCopy(assembled);
-  vtkNew<vtkDoubleArray> asymmetryArray;
-  asymmetryArray->SetName("Asymmetry");
-  asymmetryArray->SetNumberOfTuples(n);
-  for (vtkIdType v = 0; v < n; ++v)
-  {
-    asymmetryArray->SetValue(v, asymmetry(v));
-  }
-  output->GetPointData()->AddArray(asymmetryArray);
-  output->GetPointData()->SetActiveScalars("Asymmetry");
-
-  // The distance and the plane of every candidate reflection, best first.
-  vtkFieldData* fieldData = output->GetFieldData();
-  vtkDataArray* transforms = reflected->GetFieldData()->GetArray("CandidateTransforms");
-  vtkDataArray* coefficients =
-    reflected->GetFieldData()->GetArray("CandidateCorrelationCoefficients");
-  if (!transforms || !coefficients || transforms->GetNumberOfTuples() == 0 ||
-    transforms->GetNumberOfTuples() != coefficients->GetNumberOfTuples())
-  {
-    vtkErrorMacro(<< "Cannot detect symmetry: the registration reported no candidates.");
-    return 0;
-  }
-  std::vector<double> distances, normals;
-  for (vtkIdType c = 0; c < transforms->GetNumberOfTuples(); ++c)
-  {
-    distances.push_back(mobius::SymmetryDistance(coefficients->GetComponent(c, 0)));
-    Matrix3 transform;
-    transforms->GetTuple(c, transform.data());
-    const mobius::MirrorPlane plane = mobius::MirrorPlaneOf(transform);
-    normals.insert(normals.end(), plane.Normal.data(), plane.Normal.data() + 3);
-  }
-  Matrix3 best;
-  transforms->GetTuple(0, best.data());
-  const mobius::MirrorPlane plane = mobius::MirrorPlaneOf(best);
-  mobius::vtk::SetFieldValue(fieldData, "SymmetryDistance", distances[0]);
-  AddTuples(fieldData, "CandidateSymmetryDistances", 1, distances);
-  mobius::vtk::SetFieldValues(fieldData, "Reflection", best.data(), 9);
-  mobius::vtk::SetFieldValues(fieldData, "MirrorPlaneNormal", plane.Normal.data(), 3);
-  mobius::vtk::SetFieldValue(fieldData, "MirrorPlaneTwist", plane.Twist);
-  AddTuples(fieldData, "CandidateMirrorPlaneNormals", 3, normals);
-  mobius::vtk::SetFieldValue(fieldData, "MeanAsymmetry", asymmetry.mean());
-  mobius::vtk::SetFieldValue(fieldData, "MaximumAsymmetry", asymmetry.maxCoeff());
-  mobius::vtk::SetFieldInteger(fieldData, "SymmetryCentered", this->Centering ? 1 : 0);
-  mobius::vtk::SetFieldInteger(fieldData, "SymmetryRefined", refine ? 1 : 0);
-  mobius::vtk::SetFieldCount(fieldData, "SnappedVertices", static_cast<vtkIdType>(snapped));
-  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
-  this->UpdateProgress(1.0);
-  return 1;
+  // The transforms are reflections, so the refinement expects an orientation-reversing
+  // map and repairs one that comes out orientation-preserving (e.g. the identity).
+  vtkNew<vtkCorrespondenceRefinement> refinement;
+  refinement->SetSourceData(reflected);
+  refinement->SetTargetData(centered);
+  refinement->SetBasisSize(this->BasisSize);
+  refinement->SetStartBasisSize(
+    mobius::ClampToBasisSize(refinement->GetStartBasisSize(), this->BasisSize));
+  refinement->SetGeometricPolish(this->GeometricPolish);
+  refinement->SetOutputGeometryToSource();
+  refinement->SetCandidateCriterionToOrthogonality();
+  refinement->SetNumberOfThreads(threads);
+  return this->RunStage(refinement, "refinement", 0.5, 0.95);
 }
 
 //------------------------------------------------------------------------------

@@ -60,6 +60,8 @@
 #include "vtkMobiusRegistrationFiltersModule.h" // For export macro
 #include "vtkMobiusThreadedPolyDataAlgorithm.h"
 
+class vtkPolyDataAlgorithm;
+
 class VTKMOBIUSREGISTRATIONFILTERS_EXPORT vtkSymmetryDetection
   : public vtkMobiusThreadedPolyDataAlgorithm
 {
@@ -161,6 +163,19 @@ protected:
   double SnapTolerance = 1e-3;
 
 private:
+  // An internal stage's result, or nullptr after reporting its error as this filter's.
+  vtkSmartPointer<vtkPolyData> RunStage(
+    vtkPolyDataAlgorithm* filter, const char* stage, double begin, double end);
+  // The input's centered spherical map (MapAndCenter), or nullptr after reporting why not.
+  vtkSmartPointer<vtkPolyData> CenteredMapOf(vtkPolyData* input);
+  // The centered map registered against itself over reflections only.
+  vtkSmartPointer<vtkPolyData> SelfRegister(vtkPolyData* centered, int threads);
+  // Whether Refine applies to the mesh; warns when it is on but the mesh is too small.
+  bool RefinementApplies(vtkPolyData* centered);
+  // The symmetric map: the refinement's, or the dense correspondence's without refinement.
+  vtkSmartPointer<vtkPolyData> SymmetricMap(
+    vtkPolyData* reflected, vtkPolyData* centered, int threads, bool refine);
+
   vtkSymmetryDetection(const vtkSymmetryDetection&) = delete;
   void operator=(const vtkSymmetryDetection&) = delete;
 };

@@ -88,6 +88,42 @@ void TestCovering(const mobius::Points& points, const mobius::Triangles& triangl
   MOBIUS_CHECK(!mobius::BuildCyclicCovering(points.rows(), triangles, cut, 1, covering));
 }
 
+// The filter's output: one copy has as many triangles as the mesh, each on the surface area
+// of the mesh triangle it copies, its vertices numbered by first use; the covering has n
+// times the triangles and uses every covering vertex once.
+void TestOutputMesh(const mobius::Points& points, const mobius::Triangles& triangles,
+  const mobius::SphericalOrbifoldMapResult& result)
+{
+  const mobius::Vector areas = mobius::TriangleAreas(points, triangles);
+  const int n = result.Covering.Copies;
+  for (const bool whole : { false, true })
+  {
+    const mobius::OrbifoldOutputMesh mesh =
+      mobius::SelectOrbifoldOutput(result, points, triangles, whole);
+    const mobius::Index F = triangles.rows();
+    MOBIUS_CHECK(mesh.OutputTriangles.rows() == (whole ? n * F : F));
+    MOBIUS_CHECK(mesh.OutputTriangles(0, 0) == 0 && mesh.OutputTriangles(0, 1) == 1);
+    MOBIUS_CHECK(mesh.OutputTriangles.maxCoeff() + 1 == mesh.SpherePoints.rows());
+    if (whole)
+    {
+      MOBIUS_CHECK(mesh.SpherePoints.rows() ==
+        static_cast<mobius::Index>(result.Covering.SourceVertex.size()));
+    }
+    for (mobius::Index t = 0; t < mesh.OutputTriangles.rows(); ++t)
+    {
+      MOBIUS_CHECK(mesh.TriangleCopy[t] == t / F);
+      MOBIUS_CHECK(mesh.TriangleAreas[t] == areas[t % F]);
+      // Each output corner is a copy of the mesh triangle's corner, at its surface point.
+      for (int k = 0; k < 3; ++k)
+      {
+        const mobius::Index w = mesh.OutputTriangles(t, k);
+        MOBIUS_CHECK(mesh.SourceVertex[w] == triangles(t % F, k));
+        MOBIUS_CHECK(mesh.SurfacePoints.row(w) == points.row(triangles(t % F, k)));
+      }
+    }
+  }
+}
+
 void TestOrbifoldMap(const mobius::Points& points, const mobius::Triangles& triangles, int n)
 {
   mobius::SphericalOrbifoldMapParameters parameters;
@@ -132,6 +168,8 @@ void TestOrbifoldMap(const mobius::Points& points, const mobius::Triangles& tria
   const double recenteredError = SymmetryAboutConeAxis(uncentered, covering);
   std::cout << "  re-centered symmetry error " << recenteredError << std::endl;
   MOBIUS_CHECK(recenteredError < 1e-6);
+
+  TestOutputMesh(points, triangles, result);
 
   // Where the symmetry comes from (as the README says): the lifted start is already
   // symmetric about z and every flow step keeps it, with the centering between the steps
@@ -183,6 +221,18 @@ void TestErrors(const mobius::Points& points, const mobius::Triangles& triangles
   MOBIUS_CHECK(result.Message.find("neighbours") != std::string::npos);
   parameters.Cones[1] = triangles(0, 0);
   MOBIUS_CHECK(!mobius::ComputeSphericalOrbifoldMap(points, triangles, mobius::Points(), parameters).Success);
+
+  // Cones by input point id: the last vertex carrying it; an id no vertex carries is named.
+  const std::vector<mobius::Index> inputIds = { 10, 11, 12, 11, 14 };
+  mobius::Index cones[2] = { -1, -1 };
+  const mobius::Index automatic[2] = { -1, -1 };
+  MOBIUS_CHECK(mobius::FindConeVertices(inputIds, automatic, cones).empty());
+  MOBIUS_CHECK(cones[0] == -1 && cones[1] == -1);
+  const mobius::Index given[2] = { 14, 11 };
+  MOBIUS_CHECK(mobius::FindConeVertices(inputIds, given, cones).empty());
+  MOBIUS_CHECK(cones[0] == 4 && cones[1] == 3);
+  const mobius::Index dropped[2] = { 10, 13 };
+  MOBIUS_CHECK(mobius::FindConeVertices(inputIds, dropped, cones).find("cone 13 is not a vertex") == 0);
 }
 }
 

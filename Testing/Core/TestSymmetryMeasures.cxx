@@ -4,6 +4,7 @@
 // the symmetry is farther; the mirror plane and twist of composed reflections; the
 // asymmetry of an exact involution is 0 and of a perturbed one is not.
 #include "CoreTest.h"
+#include "CotangentLaplacian.h"
 #include "Icosphere.h"
 #include "SO3Correlation.h"
 #include "SphericalHarmonics.h"
@@ -148,6 +149,34 @@ void TestAsymmetry()
   const mobius::Vector perturbed =
     mobius::MirrorAsymmetry(points, triangles, triangle, barycentric, mirror);
   MOBIUS_CHECK(perturbed.mean() > 1e-3);
+  // Over sqrt(area): a copy scaled by 3 has the same relative asymmetry.
+  const mobius::Points scaled = 3.0 * points;
+  const mobius::Vector relative = mobius::RelativeMirrorAsymmetry(scaled, triangles,
+    mobius::TriangleAreas(scaled, triangles), triangle, barycentric, 3.0 * mirror);
+  const double area = mobius::TriangleAreas(points, triangles).sum();
+  MOBIUS_CHECK_NEAR(relative.mean(), perturbed.mean() / std::sqrt(area), 1e-12);
+}
+
+void TestMirrorCandidates()
+{
+  // Two reflections, best first: the distances from the coefficients, the planes and the
+  // best one's reflection.
+  const Eigen::Vector3d n = Eigen::Vector3d(0, 0, 1), m = Eigen::Vector3d(0, 1, 0);
+  const Eigen::Matrix3d first = Eigen::Matrix3d::Identity() - 2 * n * n.transpose();
+  const Eigen::Matrix3d second = Eigen::Matrix3d::Identity() - 2 * m * m.transpose();
+  mobius::MirrorCandidates candidates;
+  MOBIUS_CHECK(mobius::DescribeMirrorCandidates({ first, second }, { 1.0, 0.0 }, candidates).empty());
+  MOBIUS_CHECK(candidates.Distances.size() == 2 && candidates.Normals.size() == 6);
+  MOBIUS_CHECK_NEAR(candidates.Distances[0], 0.0, 1e-15);
+  MOBIUS_CHECK_NEAR(candidates.Distances[1], std::sqrt(0.5), 1e-15);
+  MOBIUS_CHECK_NEAR(candidates.Normals[2], 1.0, 1e-12);
+  MOBIUS_CHECK_NEAR(candidates.Normals[4], 1.0, 1e-12);
+  MOBIUS_CHECK(candidates.Best == first);
+  MOBIUS_CHECK_NEAR(candidates.BestPlane.Normal.z(), 1.0, 1e-12);
+  // None, or a coefficient missing: the problem named.
+  MOBIUS_CHECK(mobius::DescribeMirrorCandidates({}, {}, candidates).find("no candidates") !=
+    std::string::npos);
+  MOBIUS_CHECK(!mobius::DescribeMirrorCandidates({ first, second }, { 1.0 }, candidates).empty());
 }
 }
 
@@ -157,5 +186,6 @@ int main()
   TestSymmetryDistance();
   TestMirrorPlane();
   TestAsymmetry();
+  TestMirrorCandidates();
   return MOBIUS_TEST_RESULT();
 }

@@ -162,204 +162,239 @@ ConformalMapResult Fail(ConformalMapResult& result, const std::string& message)
   return result;
 }
 
-ConformalMapResult MapToSphere(
+// The parameters and the surface the flow can start from, or why not.
+std::string CheckFlowInput(
   const Points& points, const Triangles& triangles, const ConformalMapParameters& p)
 {
-  ConformalMapResult result;
   if (!(p.TimeStep > 0.0) || !std::isfinite(p.TimeStep))
   {
-    return Fail(result, "TimeStep must be a positive number");
+    return "TimeStep must be a positive number";
   }
   if (p.MaximumNumberOfIterations < 1)
   {
-    return Fail(result, "MaximumNumberOfIterations must be at least 1");
+    return "MaximumNumberOfIterations must be at least 1";
   }
   if (!(p.ConvergenceTolerance >= 0.0))
   {
-    return Fail(result, "ConvergenceTolerance must not be negative");
+    return "ConvergenceTolerance must not be negative";
   }
-
   const MeshTopologyReport topology = AnalyzeMeshTopology(points, triangles);
   if (!topology.IsTopologicalSphere())
   {
-    return Fail(result,
-      "the input is not a closed, connected, consistently oriented genus-0 surface: " +
-        DescribeTopologyProblems(topology));
+    return "the input is not a closed, connected, consistently oriented genus-0 surface: " +
+      DescribeTopologyProblems(topology);
   }
   // Collinear triangles are fine on the intrinsic Delaunay triangulation (their long edge
   // gets flipped away); a zero-length edge is caught when the weights are built.
   if (!p.IntrinsicDelaunay && topology.ZeroAreaTriangles > 0)
   {
-    return Fail(result,
-      "zero-area triangles (" + std::to_string(topology.ZeroAreaTriangles) +
-        ", three points on a line), whose cotangent weights are not defined without the "
-        "intrinsic Delaunay triangulation");
+    return "zero-area triangles (" + std::to_string(topology.ZeroAreaTriangles) +
+      ", three points on a line), whose cotangent weights are not defined without the "
+      "intrinsic Delaunay triangulation";
   }
+  return {};
+}
 
-  Points x = points;
-  Vector mass;
-  if (!NormalizeShape(x, triangles, mass))
-  {
-    return Fail(result, "the input surface has no area");
-  }
+// The flow's matrices: the stiffness L, the system M_t + delta L (L's pattern, all diagonal
+// entries stored, so that the fill-reducing ordering and the symbolic factorization are
+// computed once) and the solver holding its analysis and its latest factorization.
+struct FlowSystem
+{
+  SparseMatrix Stiffness;
+  SparseMatrix System;
+  std::vector<Index> Diagonal;
+  Vector ScaledStiffness; // delta L's values
+  SparseCholesky Solver;
+  // The solver holds a factorization of an earlier flow step's matrix (not the linear
+  // start's L + eps M, which is too far from M_t + delta L to precondition it well).
+  bool HaveFlowFactorization = false;
+};
 
-  const Vector originalAreas = TriangleAreas(x, triangles); // centering weights
-  // The flow from the surface keeps the input's orientation, the linear start's map faces
-  // outward whatever the input's does: remember which way the input faced.
-  const bool inputFacesInward = EnclosedVolume(x, triangles) < 0.0;
-
-  SparseMatrix stiffness;
+std::string BuildFlowSystem(const Points& x, const Triangles& triangles,
+  const ConformalMapParameters& p, FlowSystem& flow, ConformalMapResult& result)
+{
   CotangentStiffnessInfo stiffnessInfo;
-  if (!BuildCotangentStiffness(x, triangles, p.IntrinsicDelaunay, stiffness, stiffnessInfo))
+  if (!BuildCotangentStiffness(x, triangles, p.IntrinsicDelaunay, flow.Stiffness, stiffnessInfo))
   {
-    return Fail(result, "cannot build the Laplacian: " + stiffnessInfo.Error);
+    return "cannot build the Laplacian: " + stiffnessInfo.Error;
   }
   result.IntrinsicDelaunayUsed = p.IntrinsicDelaunay;
   result.IntrinsicFlips = stiffnessInfo.IntrinsicFlips;
+  flow.System = p.TimeStep * flow.Stiffness;
+  flow.Diagonal = DiagonalPositions(flow.System);
+  flow.ScaledStiffness = Eigen::Map<const Vector>(flow.System.valuePtr(), flow.System.nonZeros());
+  if (!flow.Solver.Analyze(flow.System))
+  {
+    return "the sparse Cholesky analysis failed";
+  }
+  return {};
+}
 
-  // The system matrix M_t + delta L has L's pattern (all diagonal entries are stored), so the
-  // fill-reducing ordering and the symbolic factorization are computed once.
-  SparseMatrix system = p.TimeStep * stiffness;
-  const std::vector<Index> diagonal = DiagonalPositions(system);
-  const Vector scaledStiffness =
-    Eigen::Map<const Vector>(system.valuePtr(), system.nonZeros()); // delta L's values
-  SparseCholesky solver;
-  if (!solver.Analyze(system))
+// Starts the flow from a conformal map instead of the surface: the flow then only polishes
+// it. If the linear map cannot be computed, x and mass stay the surface's and the flow
+// starts from it as it always could.
+void StartFromLinearMap(Points& x, Vector& mass, const Triangles& triangles,
+  const Vector& originalAreas, FlowSystem& flow, ConformalMapResult& result)
+{
+  const LinearSphericalMapResult start =
+    ComputeLinearSphericalMap(x, triangles, flow.Stiffness, mass, flow.Solver);
+  result.PoleTriangle = start.PoleTriangle;
+  result.Factorizations += start.Factorized ? 1 : 0;
+  Points startPoints = start.SpherePoints;
+  MobiusCenteringResult centering;
+  Vector startMass;
+  if (start.Success &&
+    CenterSphericalMap(startPoints, triangles, originalAreas, MobiusCenteringParameters(),
+      centering) &&
+    NormalizeShape(startPoints, triangles, startMass))
   {
-    return Fail(result, "the sparse Cholesky analysis failed");
+    // The linear map is intrinsic (its pole triangle and frame are chosen from the
+    // surface's shape), so a turned copy of the surface would get the same map. Turn it
+    // to the surface's own orientation instead: the flow commutes with rotations, so the
+    // map then turns with the input as the flow from the surface does (SO3Register of a
+    // turned copy finds the turn), and ends close to that flow's orientation.
+    startPoints = startPoints * BestRotation(startPoints, x, startMass).transpose();
+    x.swap(startPoints);
+    mass.swap(startMass);
+    result.LinearStart = true;
   }
-  if (p.LinearStart && p.MobiusCentering)
+  else
   {
-    // Start the flow from a conformal map instead of the surface: the flow then only
-    // polishes it. If the linear map cannot be computed, the flow starts from the surface
-    // as it always could.
-    const LinearSphericalMapResult start =
-      ComputeLinearSphericalMap(x, triangles, stiffness, mass, solver);
-    result.PoleTriangle = start.PoleTriangle;
-    result.Factorizations += start.Factorized ? 1 : 0;
-    Points startPoints = start.SpherePoints;
-    MobiusCenteringResult centering;
-    Vector startMass;
-    if (start.Success &&
-      CenterSphericalMap(startPoints, triangles, originalAreas, MobiusCenteringParameters(),
-        centering) &&
-      NormalizeShape(startPoints, triangles, startMass))
-    {
-      // The linear map is intrinsic (its pole triangle and frame are chosen from the
-      // surface's shape), so a turned copy of the surface would get the same map. Turn it
-      // to the surface's own orientation instead: the flow commutes with rotations, so the
-      // map then turns with the input as the flow from the surface does (SO3Register of a
-      // turned copy finds the turn), and ends close to that flow's orientation.
-      startPoints = startPoints * BestRotation(startPoints, x, startMass).transpose();
-      x.swap(startPoints);
-      mass.swap(startMass);
-      result.LinearStart = true;
-    }
-    else
-    {
-      result.LinearStartError = start.Success ? "its Möbius centering failed" : start.Error;
-    }
+    result.LinearStartError = start.Success ? "its Möbius centering failed" : start.Error;
   }
-  if (p.Progress && !p.Progress(0.05))
-  {
-    return Fail(result, "aborted");
-  }
+}
 
+// The displacement of one flow step from x, (M_t + delta L) d = -delta L x_t, solved for d
+// rather than for x_{t+1} itself: the same step, but the solver's rounding error is then
+// relative to the (small, near convergence) displacement instead of the sphere's radius,
+// which matters for limbs the map shrinks to 1e-10. One solve for the three coordinates.
+std::string SolveFlowStep(const Points& x, const Vector& mass, const ConformalMapParameters& p,
+  int iteration, FlowSystem& flow, Eigen::MatrixXd& displacement, ConformalMapResult& result)
+{
+  Eigen::Map<Vector>(flow.System.valuePtr(), flow.System.nonZeros()) = flow.ScaledStiffness;
+  for (Index i = 0; i < x.rows(); ++i)
+  {
+    flow.System.valuePtr()[flow.Diagonal[i]] += mass[i];
+  }
+  const Eigen::MatrixXd rhs = -p.TimeStep * ApplyStiffnessToDifferences(flow.Stiffness, x);
+  // Measured: 3-4 iterations to 1e-10 on every development mesh once the flow
+  // polishes; a step that needs more than 10 is far from the factorized one.
+  int cgIterations = 0;
+  const bool reused = p.ReuseFactorization && flow.HaveFlowFactorization &&
+    x.rows() >= p.ReuseFactorizationMinimumSize &&
+    SolveWithNearbyFactorization(
+      flow.System, flow.Solver, rhs, 1e-10, 10, displacement, cgIterations);
+  if (reused)
+  {
+    result.ConjugateGradientIterations += cgIterations;
+    return {};
+  }
+  if (!flow.Solver.Factorize(flow.System))
+  {
+    std::ostringstream s;
+    s << "the sparse Cholesky factorization failed at flow step " << iteration + 1;
+    return s.str();
+  }
+  ++result.Factorizations;
+  flow.HaveFlowFactorization = true;
+  displacement = flow.Solver.Solve(rhs);
+  return {};
+}
+
+// Projects the stepped points onto the unit sphere and undoes the step's drift by the
+// canonical Möbius centering (paper §7.1): without it the flow slides toward a point
+// (hand_cgal: 1227 flipped triangles after 100 steps) and never meets the convergence test.
+std::string CenterBetweenFlowSteps(
+  Points& next, Vector& nextMass, const Triangles& triangles, const Vector& originalAreas)
+{
+  for (Index i = 0; i < next.rows(); ++i)
+  {
+    const double r = next.row(i).norm();
+    if (!(r > 0.0))
+    {
+      return "a vertex reached the center during the flow; cannot center";
+    }
+    next.row(i) /= r;
+  }
+  MobiusCenteringResult centering;
+  if (!CenterSphericalMap(next, triangles, originalAreas, MobiusCenteringParameters(), centering))
+  {
+    return "Möbius centering between flow steps failed: " + centering.Error;
+  }
+  if (!NormalizeShape(next, triangles, nextMass))
+  {
+    return "Möbius centering produced degenerate positions";
+  }
+  return {};
+}
+
+// The positions after one flow step from x, normalized, centered and passed through the
+// caller's step between iterations as the parameters ask.
+std::string StepFlow(const Points& x, const Vector& mass, const Triangles& triangles,
+  const Vector& originalAreas, const ConformalMapParameters& p, int iteration, FlowSystem& flow,
+  Eigen::MatrixXd& displacement, Points& next, Vector& nextMass, ConformalMapResult& result)
+{
+  std::string error = SolveFlowStep(x, mass, p, iteration, flow, displacement, result);
+  if (!error.empty())
+  {
+    return error;
+  }
+  next = x + displacement;
+  if (!NormalizeShape(next, triangles, nextMass))
+  {
+    std::ostringstream s;
+    s << "the flow produced non-finite or degenerate positions at step " << iteration + 1;
+    return s.str();
+  }
+  if (p.MobiusCentering &&
+    !(error = CenterBetweenFlowSteps(next, nextMass, triangles, originalAreas)).empty())
+  {
+    return error;
+  }
+  if (p.BetweenSteps)
+  {
+    if (!p.BetweenSteps(next, iteration + 1))
+    {
+      return "the step between flow iterations (BetweenSteps) failed";
+    }
+    if (!NormalizeShape(next, triangles, nextMass))
+    {
+      return "the step between flow iterations produced degenerate positions";
+    }
+  }
+  return {};
+}
+
+// Runs the flow from x until its relative change is within the tolerance or the iteration
+// limit; x and mass end as the last step's positions and masses.
+std::string RunFlow(Points& x, Vector& mass, const Triangles& triangles,
+  const Vector& originalAreas, const ConformalMapParameters& p, FlowSystem& flow,
+  ConformalMapResult& result)
+{
   Points next(x.rows(), 3);
   Vector nextMass;
-  // The solver holds a factorization of an earlier flow step's matrix (not the linear
-  // start's L + eps M, which is too far from M_t + delta L to precondition it well).
-  bool haveFlowFactorization = false;
   Eigen::MatrixXd displacement;
   for (int iteration = 0; iteration < p.MaximumNumberOfIterations; ++iteration)
   {
-    Eigen::Map<Vector>(system.valuePtr(), system.nonZeros()) = scaledStiffness;
-    for (Index i = 0; i < x.rows(); ++i)
+    const std::string error = StepFlow(x, mass, triangles, originalAreas, p, iteration, flow,
+      displacement, next, nextMass, result);
+    if (!error.empty())
     {
-      system.valuePtr()[diagonal[i]] += mass[i];
-    }
-    // Solve for the displacement, (M_t + delta L) d = -delta L x_t, rather than for x_{t+1}
-    // itself: the same step, but the solver's rounding error is then relative to the
-    // (small, near convergence) displacement instead of the sphere's radius, which matters
-    // for limbs the map shrinks to 1e-10. One solve for the three coordinates.
-    const Eigen::MatrixXd rhs = -p.TimeStep * ApplyStiffnessToDifferences(stiffness, x);
-    // Measured: 3-4 iterations to 1e-10 on every development mesh once the flow
-    // polishes; a step that needs more than 10 is far from the factorized one.
-    int cgIterations = 0;
-    const bool reused = p.ReuseFactorization && haveFlowFactorization &&
-      x.rows() >= p.ReuseFactorizationMinimumSize &&
-      SolveWithNearbyFactorization(system, solver, rhs, 1e-10, 10, displacement, cgIterations);
-    if (reused)
-    {
-      result.ConjugateGradientIterations += cgIterations;
-    }
-    else
-    {
-      if (!solver.Factorize(system))
-      {
-        std::ostringstream s;
-        s << "the sparse Cholesky factorization failed at flow step " << iteration + 1;
-        return Fail(result, s.str());
-      }
-      ++result.Factorizations;
-      haveFlowFactorization = true;
-      displacement = solver.Solve(rhs);
-    }
-    next = x + displacement;
-    if (!NormalizeShape(next, triangles, nextMass))
-    {
-      std::ostringstream s;
-      s << "the flow produced non-finite or degenerate positions at step " << iteration + 1;
-      return Fail(result, s.str());
-    }
-    if (p.MobiusCentering)
-    {
-      // Project onto the unit sphere and undo the step's drift by the canonical Möbius
-      // centering (paper §7.1): without it the flow slides toward a point (hand_cgal: 1227
-      // flipped triangles after 100 steps) and never meets the convergence test.
-      for (Index i = 0; i < next.rows(); ++i)
-      {
-        const double r = next.row(i).norm();
-        if (!(r > 0.0))
-        {
-          return Fail(result, "a vertex reached the center during the flow; cannot center");
-        }
-        next.row(i) /= r;
-      }
-      MobiusCenteringResult centering;
-      if (!CenterSphericalMap(next, triangles, originalAreas, MobiusCenteringParameters(), centering))
-      {
-        return Fail(result, "Möbius centering between flow steps failed: " + centering.Error);
-      }
-      if (!NormalizeShape(next, triangles, nextMass))
-      {
-        return Fail(result, "Möbius centering produced degenerate positions");
-      }
-    }
-    if (p.BetweenSteps)
-    {
-      if (!p.BetweenSteps(next, iteration + 1))
-      {
-        return Fail(result, "the step between flow iterations (BetweenSteps) failed");
-      }
-      if (!NormalizeShape(next, triangles, nextMass))
-      {
-        return Fail(result, "the step between flow iterations produced degenerate positions");
-      }
+      return error;
     }
     // Measured after the step between iterations, so that a drift the centering undoes
     // does not count as change.
-    const double displacement = std::sqrt((nextMass.transpose() *
+    const double change = std::sqrt((nextMass.transpose() *
       (next - x).rowwise().squaredNorm()).value());
     const double radius = std::sqrt((nextMass.transpose() * next.rowwise().squaredNorm()).value());
-    result.RelativeChange = displacement / radius;
+    result.RelativeChange = change / radius;
     x.swap(next);
     mass.swap(nextMass);
     result.Iterations = iteration + 1;
 
     if (p.Progress && !p.Progress(FlowProgress(result.Iterations, p.MaximumNumberOfIterations)))
     {
-      return Fail(result, "aborted");
+      return "aborted";
     }
     if (result.RelativeChange <= p.ConvergenceTolerance)
     {
@@ -367,14 +402,20 @@ ConformalMapResult MapToSphere(
       break;
     }
   }
+  return {};
+}
 
-  // x is centered at its area-weighted centroid: project radially.
+// The flow's last positions (centered at their area-weighted centroid) projected radially
+// onto the sphere, facing outward, with squeezed regions refined and flips repaired.
+std::string FinishSphericalMap(Points& x, const Points& points, const Triangles& triangles,
+  const ConformalMapParameters& p, bool inputFacesInward, ConformalMapResult& result)
+{
   for (Index i = 0; i < x.rows(); ++i)
   {
     const double r = x.row(i).norm();
     if (!(r > 0.0) || !std::isfinite(r))
     {
-      return Fail(result, "a vertex reached the center of the sphere; cannot project it");
+      return "a vertex reached the center of the sphere; cannot project it";
     }
     x.row(i) /= r;
   }
@@ -396,17 +437,62 @@ ConformalMapResult MapToSphere(
   }
   if (!x.allFinite())
   {
-    return Fail(result, "the map has non-finite coordinates");
+    return "the map has non-finite coordinates";
   }
-  result.Distortion = MeasureMapDistortion(points, x, triangles);
-  result.SpherePoints.swap(x);
-  result.Success = true;
+  return {};
+}
+
+std::string DescribeFlow(const ConformalMapResult& result)
+{
   std::ostringstream s;
   s << (result.Converged ? "converged" : "stopped at the iteration limit") << " after "
     << result.Iterations << " steps (relative change " << result.RelativeChange << "); "
     << result.Distortion.FlippedTriangles << " flipped triangles, mean quasi-conformal distortion "
     << result.Distortion.MeanQuasiConformal;
-  result.Message = s.str();
+  return s.str();
+}
+
+ConformalMapResult MapToSphere(
+  const Points& points, const Triangles& triangles, const ConformalMapParameters& p)
+{
+  ConformalMapResult result;
+  std::string error = CheckFlowInput(points, triangles, p);
+  if (!error.empty())
+  {
+    return Fail(result, error);
+  }
+  Points x = points;
+  Vector mass;
+  if (!NormalizeShape(x, triangles, mass))
+  {
+    return Fail(result, "the input surface has no area");
+  }
+  const Vector originalAreas = TriangleAreas(x, triangles); // centering weights
+  // The flow from the surface keeps the input's orientation, the linear start's map faces
+  // outward whatever the input's does: remember which way the input faced.
+  const bool inputFacesInward = EnclosedVolume(x, triangles) < 0.0;
+  FlowSystem flow;
+  if (!(error = BuildFlowSystem(x, triangles, p, flow, result)).empty())
+  {
+    return Fail(result, error);
+  }
+  if (p.LinearStart && p.MobiusCentering)
+  {
+    StartFromLinearMap(x, mass, triangles, originalAreas, flow, result);
+  }
+  if (p.Progress && !p.Progress(0.05))
+  {
+    return Fail(result, "aborted");
+  }
+  if (!(error = RunFlow(x, mass, triangles, originalAreas, p, flow, result)).empty() ||
+    !(error = FinishSphericalMap(x, points, triangles, p, inputFacesInward, result)).empty())
+  {
+    return Fail(result, error);
+  }
+  result.Distortion = MeasureMapDistortion(points, x, triangles);
+  result.SpherePoints.swap(x);
+  result.Success = true;
+  result.Message = DescribeFlow(result);
   return result;
 }
 }

@@ -75,7 +75,7 @@ constexpr CurvatureScale kCandidateCurvature{ kCurvatureSmoothingTime, 50.0,
 /// The finer curvature the geometric polish matches (SurfacePolish), point by point between
 /// two triangulations. Its time is a diffusion over about 3% of sqrt(area), fine enough to
 /// locate a feature within an edge or two of a 5,000-vertex body: on FAUST_r training pairs
-/// 1e-4 and 5e-4 scored slightly worse, 1e-3 clearly (docs/accuracy.md, "Curvature in the
+/// 1e-4 and 5e-4 scored slightly worse, 1e-3 clearly (docs/DEVELOPMENT.md, "Curvature in the
 /// polish"). Its bound only stops outliers: a sharp tip is one vertex of a coarse mesh and
 /// several of a finer copy, with higher curvatures over smaller areas, and clamping them
 /// alike breaks what the diffusion keeps, the integral (CGAL's cow onto its 4 times finer
@@ -91,7 +91,7 @@ constexpr CurvatureScale kPolishMeanCurvature{ 2.5e-4, 1000.0, 30.0 };
 /// surface's Gaussian curvature sits at its vertices, the same angle defects on a finer copy
 /// of it at the same points: one step made CGAL's cow onto its midpoint-subdivided copy map
 /// 1.4 times worse than without this curvature, 4 steps better than without it
-/// (docs/accuracy.md, "Curvature in the polish"). No clamp: angle defects sum to 4 pi on a
+/// (docs/DEVELOPMENT.md, "Gaussian curvature too"). No clamp: angle defects sum to 4 pi on a
 /// closed genus-0 mesh of any resolution.
 constexpr CurvatureScale kPolishGaussianCurvature{ 2.5e-4,
   std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),

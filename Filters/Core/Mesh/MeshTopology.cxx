@@ -80,20 +80,22 @@ bool MeshTopologyReport::IsTopologicalSphere() const
     this->Genus == 0;
 }
 
-MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& triangles)
+namespace
 {
-  MeshTopologyReport report;
-  const Index n = points.rows();
-  report.NumberOfPoints = n;
-  report.NumberOfTriangles = triangles.rows();
-
-  for (Index i = 0; i < n; ++i)
+Index CountNonFinitePoints(const Points& points)
+{
+  Index count = 0;
+  for (Index i = 0; i < points.rows(); ++i)
   {
-    report.NonFinitePoints += points.row(i).allFinite() ? 0 : 1;
+    count += points.row(i).allFinite() ? 0 : 1;
   }
+  return count;
+}
 
-  // Exact duplicates: sort the point indices by coordinates, compare neighbours.
-  std::vector<Index> order(static_cast<size_t>(n));
+// Exact duplicates: sort the point indices by coordinates, compare neighbours.
+Index CountDuplicatePoints(const Points& points)
+{
+  std::vector<Index> order(static_cast<size_t>(points.rows()));
   std::iota(order.begin(), order.end(), Index(0));
   auto lexicographic = [&](Index a, Index b) {
     for (int k = 0; k < 3; ++k)
@@ -106,13 +108,32 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
     return false;
   };
   std::sort(order.begin(), order.end(), lexicographic);
+  Index count = 0;
   for (size_t i = 1; i < order.size(); ++i)
   {
-    report.DuplicatePoints += points.row(order[i]) == points.row(order[i - 1]) ? 1 : 0;
+    count += points.row(order[i]) == points.row(order[i - 1]) ? 1 : 0;
   }
+  return count;
+}
 
-  const std::vector<char> valid = ValidTriangles(triangles, n);
-  std::vector<char> used(static_cast<size_t>(n), 0);
+// Numerically zero: twice the area is at rounding level next to the longest edge squared
+// (a needle of 0.01 degrees is still 1e-4 here; only collinear points get this low).
+bool HasZeroArea(const Points& points, Index a, Index b, Index c)
+{
+  const double longest = std::max({ (points.row(a) - points.row(b)).squaredNorm(),
+    (points.row(b) - points.row(c)).squaredNorm(),
+    (points.row(c) - points.row(a)).squaredNorm() });
+  const double doubleArea = TriangleDoubleArea(points, a, b, c);
+  return std::isfinite(doubleArea) && doubleArea <= 1e-14 * longest;
+}
+
+// Counts the invalid, repeated-vertex and zero-area triangles into the report, marks the
+// points the valid ones use and returns how many are valid.
+Index ClassifyTriangles(const Points& points, const Triangles& triangles,
+  const std::vector<char>& valid, std::vector<char>& used, MeshTopologyReport& report)
+{
+  const Index n = points.rows();
+  used.assign(static_cast<size_t>(n), 0);
   Index validCount = 0;
   for (Index t = 0; t < triangles.rows(); ++t)
   {
@@ -130,20 +151,16 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
     }
     ++validCount;
     used[a] = used[b] = used[c] = 1;
-    // Numerically zero: twice the area is at rounding level next to the longest edge squared
-    // (a needle of 0.01 degrees is still 1e-4 here; only collinear points get this low).
-    const double longest = std::max({ (points.row(a) - points.row(b)).squaredNorm(),
-      (points.row(b) - points.row(c)).squaredNorm(),
-      (points.row(c) - points.row(a)).squaredNorm() });
-    const double doubleArea = TriangleDoubleArea(points, a, b, c);
-    if (std::isfinite(doubleArea) && doubleArea <= 1e-14 * longest)
-    {
-      ++report.ZeroAreaTriangles;
-    }
+    report.ZeroAreaTriangles += HasZeroArea(points, a, b, c) ? 1 : 0;
   }
-  // A face listed twice (either way round) makes its edges non-manifold, and a single
-  // triangle closed by FillHoles becomes two triangles on the same points (a "pillow" with
-  // no inside): named as what they are rather than only through their edges.
+  return validCount;
+}
+
+// A face listed twice (either way round) makes its edges non-manifold, and a single
+// triangle closed by FillHoles becomes two triangles on the same points (a "pillow" with
+// no inside): named as what they are rather than only through their edges.
+Index CountDuplicateTriangles(const Triangles& triangles, const std::vector<char>& valid, Index n)
+{
   using Corners = std::array<Index, 3>;
   auto produceCorners = [&](auto emit) {
     for (Index t = 0; t < triangles.rows(); ++t)
@@ -159,14 +176,17 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   const std::vector<Corners> corners = BucketSorted<Corners>(
     n, produceCorners, [](const Corners& c) { return c[0]; },
     [](const Corners& x, const Corners& y) { return x[1] != y[1] ? x[1] < y[1] : x[2] < y[2]; });
+  Index count = 0;
   for (size_t i = 1; i < corners.size(); ++i)
   {
-    report.DuplicateTriangles += corners[i] == corners[i - 1] ? 1 : 0;
+    count += corners[i] == corners[i - 1] ? 1 : 0;
   }
-  const Index usedCount = std::count(used.begin(), used.end(), 1);
-  report.UnusedPoints = n - usedCount;
+  return count;
+}
 
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, n);
+// Edges, boundary, non-manifold and inconsistently oriented edges, and boundary loops.
+void CountEdges(const std::vector<HalfEdge>& halfEdges, MeshTopologyReport& report)
+{
   ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
     ++report.Edges;
     const size_t sides = end - begin;
@@ -183,13 +203,17 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
       ++report.InconsistentlyOrientedEdges;
     }
   });
-
   std::vector<std::vector<Index>> loops;
   std::vector<char> closed;
   TraceBoundaryLoops(halfEdges, loops, closed);
   report.BoundaryLoops = static_cast<Index>(loops.size());
+}
 
-  // Components of the vertices joined by valid triangles.
+// Components of the used vertices joined by valid triangles.
+Index CountComponents(
+  const Triangles& triangles, const std::vector<char>& valid, const std::vector<char>& used)
+{
+  const Index n = static_cast<Index>(used.size());
   UnionFind components(n);
   for (Index t = 0; t < triangles.rows(); ++t)
   {
@@ -199,15 +223,21 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
       components.Union(triangles(t, 0), triangles(t, 2));
     }
   }
+  Index count = 0;
   for (Index i = 0; i < n; ++i)
   {
-    report.ConnectedComponents += (used[i] && components.Find(i) == i) ? 1 : 0;
+    count += (used[i] && components.Find(i) == i) ? 1 : 0;
   }
+  return count;
+}
 
-  // Vertex fans: the triangles around v, joined when they share an edge (v, w). A manifold
-  // vertex has one fan; two cones touching at their tips have two. The triangles' corners
-  // (3 t + k) are the elements; every edge joins the corners of its triangles at each of its
-  // two ends, so each fan of v ends up as one set of v's corners.
+// Vertex fans: the triangles around v, joined when they share an edge (v, w). A manifold
+// vertex has one fan; two cones touching at their tips have two. The triangles' corners
+// (3 t + k) are the elements; every edge joins the corners of its triangles at each of its
+// two ends, so each fan of v ends up as one set of v's corners.
+Index CountNonManifoldVertices(const Triangles& triangles, const std::vector<char>& valid,
+  const std::vector<HalfEdge>& halfEdges, Index n)
+{
   UnionFind fans(3 * triangles.rows());
   auto corner = [&](Index t, Index v) {
     return 3 * t + (triangles(t, 0) == v ? 0 : triangles(t, 1) == v ? 1 : 2);
@@ -223,18 +253,35 @@ MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& tr
   std::vector<Index> fansAt(static_cast<size_t>(n), 0);
   for (Index t = 0; t < triangles.rows(); ++t)
   {
-    if (valid[t])
+    for (int k = 0; valid[t] && k < 3; ++k)
     {
-      for (int k = 0; k < 3; ++k)
-      {
-        fansAt[triangles(t, k)] += fans.Find(3 * t + k) == 3 * t + k ? 1 : 0;
-      }
+      fansAt[triangles(t, k)] += fans.Find(3 * t + k) == 3 * t + k ? 1 : 0;
     }
   }
-  for (Index v = 0; v < n; ++v)
-  {
-    report.NonManifoldVertices += fansAt[v] > 1 ? 1 : 0;
-  }
+  return std::count_if(fansAt.begin(), fansAt.end(), [](Index f) { return f > 1; });
+}
+}
+
+MeshTopologyReport AnalyzeMeshTopology(const Points& points, const Triangles& triangles)
+{
+  MeshTopologyReport report;
+  const Index n = points.rows();
+  report.NumberOfPoints = n;
+  report.NumberOfTriangles = triangles.rows();
+  report.NonFinitePoints = CountNonFinitePoints(points);
+  report.DuplicatePoints = CountDuplicatePoints(points);
+
+  const std::vector<char> valid = ValidTriangles(triangles, n);
+  std::vector<char> used;
+  const Index validCount = ClassifyTriangles(points, triangles, valid, used, report);
+  report.DuplicateTriangles = CountDuplicateTriangles(triangles, valid, n);
+  const Index usedCount = std::count(used.begin(), used.end(), 1);
+  report.UnusedPoints = n - usedCount;
+
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, n);
+  CountEdges(halfEdges, report);
+  report.ConnectedComponents = CountComponents(triangles, valid, used);
+  report.NonManifoldVertices = CountNonManifoldVertices(triangles, valid, halfEdges, n);
 
   report.EulerCharacteristic = usedCount - report.Edges + validCount;
   if (validCount > 0 && report.IsClosedManifold() && report.InconsistentlyOrientedEdges == 0 &&

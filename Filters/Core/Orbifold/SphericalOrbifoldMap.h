@@ -86,6 +86,31 @@ SphericalOrbifoldMapResult ComputeSphericalOrbifoldMap(const Points& points,
 /// Checks the cones and the number of copies for a mesh of `numberOfPoints` vertices; an
 /// empty string when they are valid, the problem otherwise (both cones -1 means automatic).
 std::string CheckOrbifoldParameters(Index numberOfPoints, int copies, Index cone0, Index cone1);
+
+/// The mesh vertices of the two cones named by their input point ids (`inputIds[v]` is mesh
+/// vertex v's; the last vertex carrying the id when several do), into `cones`. Both ids -1
+/// leave `cones` at -1 (automatic cones). An empty string, or the problem: a cone that is not
+/// a vertex of the mapped (repaired) surface.
+std::string FindConeVertices(
+  const std::vector<Index>& inputIds, const Index coneIds[2], Index cones[2]);
+
+/// What an orbifold map puts out: one copy of the covering (copy 0's triangles: its own
+/// vertices and the next copy's along the cut's left side) or the whole covering, the
+/// covering's vertices renumbered in order of first use by the triangles.
+struct OrbifoldOutputMesh
+{
+  Points SpherePoints;              ///< the map of each output vertex
+  Points SurfacePoints;             ///< the surface point of the mesh vertex it copies
+  std::vector<Index> SourceVertex;  ///< the mesh vertex it copies
+  std::vector<int> VertexCopy;      ///< its copy (-1 for the cones)
+  Triangles OutputTriangles;
+  std::vector<int> TriangleCopy;    ///< the copy each triangle belongs to
+  Vector TriangleAreas;             ///< the surface area of the mesh triangle it copies
+};
+
+/// The output mesh of a successful `result` for the mesh (surface, triangles).
+OrbifoldOutputMesh SelectOrbifoldOutput(const SphericalOrbifoldMapResult& result,
+  const Points& surface, const Triangles& triangles, bool wholeCovering);
 }
 
 #endif

@@ -634,6 +634,207 @@ int ChooseRefinementBandwidth(const SphericalHarmonicCoefficients& source,
   return std::max(bandwidth, std::min(B, 2));
 }
 
+namespace
+{
+using Complex = std::complex<double>;
+using BlockMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
+using BlockMap = Eigen::Map<BlockMatrix>;
+
+// Phase tables per sample c and index 0 <= j < B, at c * B + j: e^{-ijα} i^j, e^{-ijγ} i^{-j}
+// and e^{-ijβ}.
+struct SamplePhases
+{
+  std::vector<Complex> Alpha, Gamma, Beta;
+};
+
+SamplePhases ComputeSamplePhases(const std::vector<SO3CorrelationSample>& samples, int B)
+{
+  const int count = static_cast<int>(samples.size());
+  const std::size_t table = static_cast<std::size_t>(count) * B;
+  SamplePhases phases{ std::vector<Complex>(table), std::vector<Complex>(table),
+    std::vector<Complex>(table) };
+  for (int c = 0; c < count; ++c)
+  {
+    const Eigen::Vector3d& e = samples[c].EulerAngles;
+    static const Complex powersOfI[4] = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } };
+    for (int m = 0; m < B; ++m)
+    {
+      phases.Alpha[c * B + m] = std::polar(1.0, -m * e[0]) * powersOfI[m & 3];
+      phases.Gamma[c * B + m] = std::polar(1.0, -m * e[2]) * powersOfI[(4 - (m & 3)) & 3];
+      phases.Beta[c * B + m] = std::polar(1.0, -m * e[1]);
+    }
+  }
+  return phases;
+}
+
+// One thread's buffers for the bands it correlates, sized for the largest band.
+struct BandScratch
+{
+  std::vector<double> Work;
+  std::vector<double> Delta;  // four blocks E[kp][mp], column-major
+  std::vector<double> Right;  // per mp: real and imaginary right-hand sides
+  std::vector<double> Result; // per kp: P (real parts of u, v) and Q (imaginary parts)
+};
+
+// Band l's blocks, split by the parity of their indices, in a thread's scratch: rows[p] of
+// the indices in [0, l] with parity p; Delta[kp][mp] the Δ_km with k, m of those parities;
+// Right[mp][part] and Result[kp][part] the real (part 0) and imaginary (part 1) parts of the
+// 6 columns per sample.
+struct BandBlocks
+{
+  int Rows[2];
+  double* Delta[2][2];
+  double* Right[2][2];
+  double* Result[2][2];
+
+  BandBlocks(int l, std::size_t half, int columns, BandScratch& s)
+    : Rows{ l / 2 + 1, (l + 1) / 2 }
+  {
+    for (int p = 0; p < 2; ++p)
+    {
+      for (int q = 0; q < 2; ++q)
+      {
+        this->Delta[p][q] = s.Delta.data() + (2 * p + q) * half * half;
+        this->Right[p][q] = s.Right.data() + (2 * p + q) * half * columns;
+        this->Result[p][q] = s.Result.data() + (2 * p + q) * half * columns;
+      }
+    }
+  }
+};
+
+// The Wigner Δ^l blocks, rows and columns split by parity.
+void FillDeltaBlocks(int l, BandScratch& s, BandBlocks& blocks)
+{
+  const int* rows = blocks.Rows;
+  VisitWignerDeltaColumns(l, s.Work, [&](int m, const double* column) {
+    const int mp = m & 1;
+    double* even = blocks.Delta[0][mp] + static_cast<std::size_t>(m >> 1) * rows[0];
+    double* odd = blocks.Delta[1][mp] + static_cast<std::size_t>(m >> 1) * rows[1];
+    for (int i = 0; i < rows[0]; ++i)
+    {
+      even[i] = column[2 * i];
+    }
+    for (int i = 0; i < rows[1]; ++i)
+    {
+      odd[i] = column[2 * i + 1];
+    }
+  });
+}
+
+// Right-hand sides: Right[mp][0] = w Re(.), Right[mp][1] = w Im(.), rows m = 2j + mp, the
+// columns a, ∂α a, ∂α² a, b, ∂γ b, ∂γ² b of each sample.
+void FillRightHandSides(int l, const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, const std::vector<SO3CorrelationSample>& samples,
+  const SamplePhases& phases, int B, BandBlocks& blocks)
+{
+  const int count = static_cast<int>(samples.size());
+  for (int c = 0; c < count; ++c)
+  {
+    const double sourceSign = (samples[c].ReflectSource && (l & 1)) ? -1.0 : 1.0;
+    for (int m = 0; m <= l; ++m)
+    {
+      const double w = m == 0 ? 1.0 : 2.0;
+      const Complex a = w * std::conj(target(l, m)) * phases.Alpha[c * B + m];
+      const Complex b = (w * sourceSign) * source(l, m) * phases.Gamma[c * B + m];
+      const Complex minusIm(0, -m);
+      const Complex values[6] = { a, minusIm * a, -double(m) * m * a, b, minusIm * b,
+        -double(m) * m * b };
+      const int mp = m & 1;
+      const std::size_t row = m >> 1;
+      for (int q = 0; q < 6; ++q)
+      {
+        const std::size_t index = static_cast<std::size_t>(6 * c + q) * blocks.Rows[mp] + row;
+        blocks.Right[mp][0][index] = values[q].real();
+        blocks.Right[mp][1][index] = values[q].imag();
+      }
+    }
+  }
+}
+
+// The four real block products: u_k and v_k for every k >= 0, real and imaginary parts.
+void MultiplyBlocks(int l, int columns, BandBlocks& blocks)
+{
+  const int* rows = blocks.Rows;
+  for (int kp = 0; kp < 2; ++kp)
+  {
+    if (rows[kp] == 0)
+    {
+      continue;
+    }
+    const int realParity = (l + kp) & 1; // m ≡ l + k contributes to the real part
+    for (int part = 0; part < 2; ++part)
+    {
+      const int mp = part == 0 ? realParity : 1 - realParity;
+      BlockMap out(blocks.Result[kp][part], rows[kp], columns);
+      if (rows[mp] == 0)
+      {
+        out.setZero();
+        continue;
+      }
+      const BlockMap delta(blocks.Delta[kp][mp], rows[kp], rows[mp]);
+      const BlockMap rhs(blocks.Right[mp][part], rows[mp], columns);
+      out.noalias() = delta * rhs;
+    }
+  }
+}
+
+// Band l's 10 sums of sample c (C, ∂α, ∂β, ∂γ, αα, αβ, αγ, ββ, βγ, γγ) from u and v:
+// Re Σ_{k>=0} w_k u_k v_k e^{-ikβ} and its derivatives, ∂β bringing down -ik.
+void SumBand(int l, int c, const BandBlocks& blocks, const Complex* betaPhase, double* sum)
+{
+  std::fill(sum, sum + 10, 0.0);
+  for (int k = 0; k <= l; ++k)
+  {
+    const int kp = k & 1;
+    const std::size_t i = k >> 1;
+    auto at = [&](int q) {
+      const std::size_t index = static_cast<std::size_t>(6 * c + q) * blocks.Rows[kp] + i;
+      return Complex(blocks.Result[kp][0][index], blocks.Result[kp][1][index]);
+    };
+    const Complex u0 = at(0), u1 = at(1), u2 = at(2), v0 = at(3), v1 = at(4), v2 = at(5);
+    const Complex e = (k == 0 ? 1.0 : 2.0) * betaPhase[k];
+    const Complex t(0, -k); // ∂β
+    const Complex u0e = u0 * e;
+    const Complex u1e = u1 * e;
+    const Complex value = u0e * v0;
+    sum[0] += value.real();
+    sum[1] += (u1e * v0).real();
+    sum[2] += (t * value).real();
+    sum[3] += (u0e * v1).real();
+    sum[4] += (u2 * e * v0).real();
+    sum[5] += (t * u1e * v0).real();
+    sum[6] += (u1e * v1).real();
+    sum[7] += (t * t * value).real();
+    sum[8] += (t * u0e * v1).real();
+    sum[9] += (u0e * v2).real();
+  }
+}
+
+// Each sample's value, gradient and Hessian: the per-band sums added in band order (the
+// same for any number of threads).
+void AddBands(const std::vector<double>& perBand, int B, std::vector<SO3CorrelationSample>& samples)
+{
+  const int count = static_cast<int>(samples.size());
+  for (int c = 0; c < count; ++c)
+  {
+    double total[10] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+    for (int l = 0; l < B; ++l)
+    {
+      const double* band = perBand.data() + (static_cast<std::size_t>(l) * count + c) * 10;
+      for (int q = 0; q < 10; ++q)
+      {
+        total[q] += band[q];
+      }
+    }
+    SO3CorrelationSample& sample = samples[c];
+    sample.Value = total[0];
+    sample.Gradient = Eigen::Vector3d(total[1], total[2], total[3]);
+    sample.Hessian << total[4], total[5], total[6], total[5], total[7], total[8], total[6],
+      total[8], total[9];
+  }
+}
+}
+
 // Per band l, with a_m = conj(g_lm) e^{-imα} i^m and b_n = ±f_ln e^{-inγ} i^{-n}
 // (d = i^(m-n) Σ_k Δ_km Δ_kn e^{-ikβ}):
 //   C = Σ_k u_k v_k e^{-ikβ},  u_k = Σ_m Δ_km a_m,  v_k = Σ_n Δ_kn b_n,  |k|, |m|, |n| <= l.
@@ -664,34 +865,11 @@ void EvaluateCorrelationSamples(const SphericalHarmonicCoefficients& source,
     return;
   }
   const int threads = std::min(ResolveThreadCount(numberOfThreads), B);
-  using Complex = std::complex<double>;
-  // Phase tables: e^{-imα} i^m, e^{-inγ} i^{-n}, e^{-ikβ} for 0 <= m, n, k < B.
-  const std::size_t table = static_cast<std::size_t>(count) * B;
-  std::vector<Complex> alphaPhase(table), gammaPhase(table), betaPhase(table);
-  for (int c = 0; c < count; ++c)
-  {
-    const Eigen::Vector3d& e = samples[c].EulerAngles;
-    static const Complex powersOfI[4] = { { 1, 0 }, { 0, 1 }, { -1, 0 }, { 0, -1 } };
-    for (int m = 0; m < B; ++m)
-    {
-      alphaPhase[c * B + m] = std::polar(1.0, -m * e[0]) * powersOfI[m & 3];
-      gammaPhase[c * B + m] = std::polar(1.0, -m * e[2]) * powersOfI[(4 - (m & 3)) & 3];
-      betaPhase[c * B + m] = std::polar(1.0, -m * e[1]);
-    }
-  }
-  using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
-  using MatrixMap = Eigen::Map<Matrix>;
+  const SamplePhases phases = ComputeSamplePhases(samples, B);
   const int columns = 6 * count;
   const std::size_t half = static_cast<std::size_t>(B + 1) / 2 + 1; // >= rows of any block
-  struct Scratch
-  {
-    std::vector<double> Work;
-    std::vector<double> Delta;  // four blocks E[kp][mp], column-major
-    std::vector<double> Right;  // per mp: real and imaginary right-hand sides
-    std::vector<double> Result; // per kp: P (real parts of u, v) and Q (imaginary parts)
-  };
-  std::vector<Scratch> scratch(threads);
-  for (Scratch& s : scratch)
+  std::vector<BandScratch> scratch(threads);
+  for (BandScratch& s : scratch)
   {
     s.Delta.resize(4 * half * half);
     s.Right.resize(4 * half * columns);
@@ -701,130 +879,17 @@ void EvaluateCorrelationSamples(const SphericalHarmonicCoefficients& source,
   std::vector<double> perBand(static_cast<std::size_t>(B) * count * 10, 0.0);
   ParallelFor(B, threads, [&](int task, int thread) {
     const int l = B - 1 - task; // large bands first
-    Scratch& s = scratch[thread];
-    const int rows[2] = { l / 2 + 1, (l + 1) / 2 }; // even and odd indices in [0, l]
-    double* blocks[2][2];
-    for (int kp = 0; kp < 2; ++kp)
-    {
-      for (int mp = 0; mp < 2; ++mp)
-      {
-        blocks[kp][mp] = s.Delta.data() + (2 * kp + mp) * half * half;
-      }
-    }
-    VisitWignerDeltaColumns(l, s.Work, [&](int m, const double* column) {
-      const int mp = m & 1;
-      double* even = blocks[0][mp] + static_cast<std::size_t>(m >> 1) * rows[0];
-      double* odd = blocks[1][mp] + static_cast<std::size_t>(m >> 1) * rows[1];
-      for (int i = 0; i < rows[0]; ++i)
-      {
-        even[i] = column[2 * i];
-      }
-      for (int i = 0; i < rows[1]; ++i)
-      {
-        odd[i] = column[2 * i + 1];
-      }
-    });
-    // Right-hand sides: Right[mp][0] = w Re(.), Right[mp][1] = w Im(.), rows m = 2j + mp.
-    double* right[2][2];
-    double* result[2][2];
-    for (int p = 0; p < 2; ++p)
-    {
-      for (int part = 0; part < 2; ++part)
-      {
-        right[p][part] = s.Right.data() + (2 * p + part) * half * columns;
-        result[p][part] = s.Result.data() + (2 * p + part) * half * columns;
-      }
-    }
+    BandBlocks blocks(l, half, columns, scratch[thread]);
+    FillDeltaBlocks(l, scratch[thread], blocks);
+    FillRightHandSides(l, source, target, samples, phases, B, blocks);
+    MultiplyBlocks(l, columns, blocks);
     for (int c = 0; c < count; ++c)
     {
-      const double sourceSign = (samples[c].ReflectSource && (l & 1)) ? -1.0 : 1.0;
-      for (int m = 0; m <= l; ++m)
-      {
-        const double w = m == 0 ? 1.0 : 2.0;
-        const Complex a = w * std::conj(target(l, m)) * alphaPhase[c * B + m];
-        const Complex b = (w * sourceSign) * source(l, m) * gammaPhase[c * B + m];
-        const Complex minusIm(0, -m);
-        const Complex values[6] = { a, minusIm * a, -double(m) * m * a, b, minusIm * b,
-          -double(m) * m * b };
-        const int mp = m & 1;
-        const std::size_t row = m >> 1;
-        for (int q = 0; q < 6; ++q)
-        {
-          const std::size_t index = static_cast<std::size_t>(6 * c + q) * rows[mp] + row;
-          right[mp][0][index] = values[q].real();
-          right[mp][1][index] = values[q].imag();
-        }
-      }
-    }
-    for (int kp = 0; kp < 2; ++kp)
-    {
-      if (rows[kp] == 0)
-      {
-        continue;
-      }
-      const int realParity = (l + kp) & 1; // m ≡ l + k contributes to the real part
-      for (int part = 0; part < 2; ++part)
-      {
-        const int mp = part == 0 ? realParity : 1 - realParity;
-        MatrixMap out(result[kp][part], rows[kp], columns);
-        if (rows[mp] == 0)
-        {
-          out.setZero();
-          continue;
-        }
-        const MatrixMap delta(blocks[kp][mp], rows[kp], rows[mp]);
-        const MatrixMap rhs(right[mp][part], rows[mp], columns);
-        out.noalias() = delta * rhs;
-      }
-    }
-    for (int c = 0; c < count; ++c)
-    {
-      double sum[10] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
-      for (int k = 0; k <= l; ++k)
-      {
-        const int kp = k & 1;
-        const std::size_t i = k >> 1;
-        auto at = [&](int q) {
-          const std::size_t index = static_cast<std::size_t>(6 * c + q) * rows[kp] + i;
-          return Complex(result[kp][0][index], result[kp][1][index]);
-        };
-        const Complex u0 = at(0), u1 = at(1), u2 = at(2), v0 = at(3), v1 = at(4), v2 = at(5);
-        const Complex e = (k == 0 ? 1.0 : 2.0) * betaPhase[c * B + k];
-        const Complex t(0, -k); // ∂β
-        const Complex u0e = u0 * e;
-        const Complex u1e = u1 * e;
-        const Complex value = u0e * v0;
-        sum[0] += value.real();
-        sum[1] += (u1e * v0).real();
-        sum[2] += (t * value).real();
-        sum[3] += (u0e * v1).real();
-        sum[4] += (u2 * e * v0).real();
-        sum[5] += (t * u1e * v0).real();
-        sum[6] += (u1e * v1).real();
-        sum[7] += (t * t * value).real();
-        sum[8] += (t * u0e * v1).real();
-        sum[9] += (u0e * v2).real();
-      }
-      std::copy(sum, sum + 10, perBand.data() + (static_cast<std::size_t>(l) * count + c) * 10);
+      SumBand(l, c, blocks, phases.Beta.data() + c * B,
+        perBand.data() + (static_cast<std::size_t>(l) * count + c) * 10);
     }
   });
-  for (int c = 0; c < count; ++c)
-  {
-    double total[10] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
-    for (int l = 0; l < B; ++l)
-    {
-      const double* band = perBand.data() + (static_cast<std::size_t>(l) * count + c) * 10;
-      for (int q = 0; q < 10; ++q)
-      {
-        total[q] += band[q];
-      }
-    }
-    SO3CorrelationSample& sample = samples[c];
-    sample.Value = total[0];
-    sample.Gradient = Eigen::Vector3d(total[1], total[2], total[3]);
-    sample.Hessian << total[4], total[5], total[6], total[5], total[7], total[8], total[6],
-      total[8], total[9];
-  }
+  AddBands(perBand, B, samples);
 }
 
 SO3Candidate ScoredCandidate(const SphericalHarmonicCoefficients& source,

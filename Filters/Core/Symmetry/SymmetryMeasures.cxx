@@ -52,4 +52,33 @@ Vector MirrorAsymmetry(const Points& surface, const Triangles& triangles,
   }
   return asymmetry;
 }
+
+Vector RelativeMirrorAsymmetry(const Points& surface, const Triangles& triangles,
+  const Vector& areas, const std::vector<Index>& mirrorTriangle,
+  const std::vector<Eigen::Vector3d>& barycentric, const Points& mirrorPoints)
+{
+  const double scale = std::sqrt(areas.sum());
+  return MirrorAsymmetry(surface, triangles, mirrorTriangle, barycentric, mirrorPoints) / scale;
+}
+
+std::string DescribeMirrorCandidates(const std::vector<Eigen::Matrix3d>& reflections,
+  const std::vector<double>& correlationCoefficients, MirrorCandidates& candidates)
+{
+  if (reflections.empty() || reflections.size() != correlationCoefficients.size())
+  {
+    return "the registration reported no candidates";
+  }
+  candidates.Distances.clear();
+  candidates.Normals.clear();
+  for (size_t c = 0; c < reflections.size(); ++c)
+  {
+    candidates.Distances.push_back(SymmetryDistance(correlationCoefficients[c]));
+    const MirrorPlane plane = MirrorPlaneOf(reflections[c]);
+    candidates.Normals.insert(
+      candidates.Normals.end(), plane.Normal.data(), plane.Normal.data() + 3);
+  }
+  candidates.Best = reflections[0];
+  candidates.BestPlane = MirrorPlaneOf(reflections[0]);
+  return std::string();
+}
 }

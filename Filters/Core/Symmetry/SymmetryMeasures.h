@@ -22,6 +22,7 @@
 
 #include <Eigen/Core>
 
+#include <string>
 #include <vector>
 
 namespace mobius
@@ -50,6 +51,27 @@ MirrorPlane MirrorPlaneOf(const Eigen::Matrix3d& reflection);
 Vector MirrorAsymmetry(const Points& surface, const Triangles& triangles,
   const std::vector<Index>& mirrorTriangle, const std::vector<Eigen::Vector3d>& barycentric,
   const Points& mirrorPoints);
+
+/// MirrorAsymmetry over sqrt(surface area), `areas` the triangles' areas: comparable
+/// between surfaces of any size.
+Vector RelativeMirrorAsymmetry(const Points& surface, const Triangles& triangles,
+  const Vector& areas, const std::vector<Index>& mirrorTriangle,
+  const std::vector<Eigen::Vector3d>& barycentric, const Points& mirrorPoints);
+
+/// The candidate reflections of a reflective self-registration, best first: each one's
+/// symmetry distance and mirror-plane normal, and the best one's reflection and plane.
+struct MirrorCandidates
+{
+  std::vector<double> Distances;
+  std::vector<double> Normals; ///< 3 per candidate
+  Eigen::Matrix3d Best;
+  MirrorPlane BestPlane;
+};
+
+/// The candidates of the `reflections` and their correlation coefficients (one each, best
+/// first) into `candidates`: an empty string, or the problem (none, or the counts differ).
+std::string DescribeMirrorCandidates(const std::vector<Eigen::Matrix3d>& reflections,
+  const std::vector<double>& correlationCoefficients, MirrorCandidates& candidates);
 }
 
 #endif
