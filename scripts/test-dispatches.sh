@@ -12,9 +12,16 @@
 # OpenBLAS one the CPU cannot run). Then the default map of CGAL's cow onto a bent copy of it
 # is computed under each dispatch and must be the same bit for bit (docs/accuracy.md,
 # "Reproducibility across CPUs").
-# Usage: scripts/test-dispatches.sh [ctest options...]   (after scripts/setup.sh or test.sh;
-# MOBIUS_BUILD_DIR as for test.sh). Exits non-zero if a test fails under any dispatch.
+# Usage: scripts/test-dispatches.sh [--glibc-only] [ctest options...]   (after scripts/setup.sh
+# or test.sh; MOBIUS_BUILD_DIR as for test.sh). --glibc-only: glibc's dispatch alone (CI's
+# run: it is the one that moves maps below 50,000 vertices). Exits non-zero if a test fails
+# under any dispatch.
 set -euo pipefail
+glibc_only=0
+if [ "${1:-}" = --glibc-only ]; then
+  glibc_only=1
+  shift
+fi
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${MOBIUS_BUILD_DIR:-$root/build}"
 register="$build/bin/mobius-register"
@@ -50,7 +57,9 @@ dispatches=("$glibc_tunable")
 notes=("glibc math without FMA and AVX2 (this CPU: FMA $fma, AVX2 $avx2)")
 
 default_core="$(openblas_core)"
-if [ -z "$default_core" ]; then
+if [ "$glibc_only" = 1 ]; then
+  echo "test-dispatches: --glibc-only: OpenBLAS's other kernels not tried"
+elif [ -z "$default_core" ]; then
   echo "test-dispatches: OpenBLAS does not say its core (libblas.so.3 is not OpenBLAS?): its run skipped"
 else
   other_core=Haswell
