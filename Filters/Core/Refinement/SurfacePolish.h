@@ -31,7 +31,7 @@
 // a person stretches the skin unevenly: on 10 FAUST_r training pairs a map started at the
 // ground truth (0.44) drifted to 1.44 without the pull to the spectral map. Curvature holds
 // the slide where it varies; the two curvatures vary in different directions, so together
-// they hold it in more places (docs/accuracy.md, "Curvature in the polish").
+// they hold it in more places (docs/DEVELOPMENT.md, "Curvature in the polish").
 //
 // How far to trust the rigid prior is measured on the pair itself. ARAP is right for a
 // near-isometric pair; between two poses (skin stretching at the joints) or two people it
@@ -44,7 +44,7 @@
 // pairs 0.008-0.025. Above RigidResidual the closest-point fit grows in proportion for the
 // second half (at most MaximumFitGain times), so the target's shape and curvatures hold the
 // map against the rigid prior's slides, and the curvatures' weights follow
-// GainedCurvatureScales (docs/accuracy.md, "Trusting the rigid prior less").
+// GainedCurvatureScales (docs/DEVELOPMENT.md, "Trusting the rigid prior less").
 //
 // Measured (README, Accuracy): on rotated re-triangulated copies the mean error falls from
 // 4.9e-3..7.9e-3 to 0.6e-3..3.2e-3 of sqrt(area), on bent copies by a fifth to a half, on
@@ -70,17 +70,17 @@ struct SurfacePolishParameters
 {
   /// Slides of whole parts along the target converge slowly (see above): more iterations
   /// keep lowering the error of real pose pairs up to about this many, at a cost small
-  /// beside the refinement's (docs/accuracy.md, "Where the remaining FAUST_r error is").
+  /// beside the refinement's (docs/DEVELOPMENT.md, "Where the remaining FAUST_r error is").
   int Iterations = 60;
   /// Weight of the closest-point term per vertex, against the ARAP energy (whose weights
   /// per vertex sum to about 2-4 on a regular mesh): of order 1 balances the two at the
   /// scale of an edge. Below 1 since the closest points match curvatures, whose steps the
   /// rigid prior then smooths more (FAUST_r training pairs: 0.6 scored 1% better than 1,
-  /// 2 4% worse; docs/accuracy.md, "Curvature in the polish").
+  /// 2 4% worse; docs/DEVELOPMENT.md, "Curvature in the polish").
   double Fit = 0.6;
   /// Weight of the pull back to the spectral map: small, it only keeps directions the
   /// geometry does not fix (sliding along a featureless cylinder) where they were. Any more
-  /// holds back the slides the polish is for (docs/accuracy.md, "The polish's anchor":
+  /// holds back the slides the polish is for (docs/DEVELOPMENT.md, "The polish's anchor":
   /// 0.005 and 0.02 score worse on FAUST_r, bent and re-triangulated copies; 0 and 0.001
   /// no better than this).
   double Anchor = 0.002;
@@ -94,7 +94,7 @@ struct SurfacePolishParameters
   /// resolution (bodies of 20,000 vertices gained 1.6 times as much so). More helps FAUST_r's
   /// pairs of different people, less SMPL's man -> woman, whose curvatures differ for real:
   /// both gain at these weights. The Gaussian curvature's at twice the weight scored FAUST_r
-  /// 4% better but SMPL 24% worse (docs/accuracy.md, "Curvature in the polish").
+  /// 4% better but SMPL 24% worse (docs/DEVELOPMENT.md, "Curvature in the polish").
   std::array<double, kPolishCurvatures.size()> CurvatureWeights{ 0.0008, 0.0004 };
   /// Mean relative ARAP residual (see above) up to which a pair counts as near-isometric:
   /// its map keeps Fit throughout. Above SMPL's man -> woman and CGAL's bent copies but the
@@ -103,7 +103,7 @@ struct SurfacePolishParameters
   /// A pair's Fit for the second half of the iterations is Fit times its mean ARAP residual
   /// over RigidResidual, at most this: FAUST_r training pairs (residuals 0.008-0.025) scored
   /// 3% better with the gain (2.5 for most), no better at 4. One gain for every pair scored
-  /// FAUST_r alike but SMPL's man -> woman 14% worse (docs/accuracy.md, "Trusting the rigid
+  /// FAUST_r alike but SMPL's man -> woman 14% worse (docs/DEVELOPMENT.md, "Trusting the rigid
   /// prior less").
   double MaximumFitGain = 2.5;
   /// Where the fit gained, each curvature's weight over the second half goes linearly from

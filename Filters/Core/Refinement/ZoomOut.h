@@ -77,14 +77,14 @@ struct ZoomOutParameters
   /// searches on all vertices, each relative to one eigenfunction. Curvature does not change
   /// with the pose where the skin does not stretch: it holds the spectral map's slides on
   /// smooth parts (FAUST_r training pairs: 1.344 -> 1.319 at 3, alike at 2-6, worse at 10;
-  /// docs/accuracy.md, "Curvature in the spectral map"). 0: the eigenfunctions alone.
+  /// docs/DEVELOPMENT.md, "Curvature in the spectral map"). 0: the eigenfunctions alone.
   std::array<double, kPolishCurvatures.size()> FullResolutionCurvatureWeights{ 3.0, 3.0 };
   /// The same in the iterations on the samples, from basis size SampleCurvatureFromSize on:
   /// after the candidates are screened (RegistrationParameters::ScreeningBasisSize, 30),
   /// once the eigenfunctions place the limbs. Lower than on all vertices: 1,000 samples are
   /// far apart beside the curvatures' features, and at 2-3 a sample can jump to a far one of
   /// like curvature (a bent copy of CGAL's man came out with 0.6% of its vertices wrong).
-  /// FAUST_r training pairs: 1.321 -> 1.305 and 1.357 -> 1.339 (docs/accuracy.md, "On the
+  /// FAUST_r training pairs: 1.321 -> 1.305 and 1.357 -> 1.339 (docs/DEVELOPMENT.md, "On the
   /// samples too").
   std::array<double, kPolishCurvatures.size()> SampleCurvatureWeights{ 1.0, 1.0 };
   int SampleCurvatureFromSize = 40;
