@@ -3,6 +3,7 @@
 #include "CotangentLaplacian.h"
 
 #include <cmath>
+#include <utility>
 
 namespace mobius
 {
@@ -76,5 +77,21 @@ CandidateChoice ChooseCandidate(const std::vector<SampleMap>& screened,
                                   : std::numeric_limits<double>::infinity();
   }
   return choice;
+}
+
+void ChooseByStretch(
+  CandidateChoice& choice, size_t candidates, double keptStretch, double runnerUpStretch)
+{
+  choice.Stretch.assign(candidates, std::numeric_limits<double>::quiet_NaN());
+  choice.Stretch[static_cast<size_t>(choice.Kept)] = keptStretch;
+  choice.Stretch[static_cast<size_t>(choice.RunnerUp)] = runnerUpStretch;
+  choice.ByStretch = true;
+  if (runnerUpStretch < keptStretch)
+  {
+    std::swap(choice.Kept, choice.RunnerUp);
+    std::swap(keptStretch, runnerUpStretch);
+  }
+  choice.Margin = keptStretch > 0 ? (runnerUpStretch - keptStretch) / keptStretch
+                                  : std::numeric_limits<double>::infinity();
 }
 }
