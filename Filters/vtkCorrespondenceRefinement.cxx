@@ -227,12 +227,9 @@ std::string ChoiceName(const mobius::RefinedCorrespondence& refined, int candida
   {
     return "given";
   }
-  if (refined.Choice.ByStretch)
-  {
-    return "map stretch";
-  }
   const double curvature = refined.Screened[refined.Choice.Kept].CurvatureDifference;
-  return std::isfinite(curvature) ? "curvature" : "orthogonality";
+  const std::string criterion = std::isfinite(curvature) ? "curvature" : "orthogonality";
+  return refined.Choice.ByFinishedMaps ? criterion + " and map stretch" : criterion;
 }
 
 // One sentence on the choice for the field data RefinementChoiceSummary, which ParaView's
@@ -249,15 +246,16 @@ std::string ChoiceSummary(const mobius::RefinedCorrespondence& refined, int cand
   }
   const std::string by = ChoiceName(refined, candidate);
   summary << " kept by " << by;
-  if (choice.ByStretch)
+  if (choice.ByFinishedMaps)
   {
-    summary << " (" << choice.Stretch[choice.Kept]
-            << "; both finished maps compared, their curvature having come within "
+    summary << " (score " << choice.Score[choice.Kept] << " times stretch "
+            << choice.Stretch[choice.Kept]
+            << "; both maps finished and compared, their scores having come within "
             << 100 * mobius::kFinishRunnerUpMargin << "%)";
   }
-  else if (by == "curvature")
+  else
   {
-    summary << " (difference " << refined.Screened[choice.Kept].CurvatureDifference << ")";
+    summary << " (score " << choice.Score[choice.Kept] << ")";
   }
   if (choice.RunnerUp < 0)
   {
@@ -285,9 +283,9 @@ std::string NearEqualCandidatesWarning(const mobius::CandidateChoice& choice)
   }
   std::ostringstream message;
   message << "Candidates " << choice.Kept << " (kept) and " << choice.RunnerUp
-          << (choice.ByStretch
-                 ? " give different maps that, finished, stretch the surface almost equally "
-                   "(margin "
+          << (choice.ByFinishedMaps
+                 ? " give different maps that, finished, keep the surfaces' curvature and "
+                   "stretch them almost equally (margin "
                  : " give different maps that keep the surfaces' curvature almost equally "
                    "well (margin ")
           << 100 * choice.Margin
@@ -445,12 +443,12 @@ void AddRefinementFieldData(const mobius::RefinedCorrespondence& refined, int ca
     stretch.push_back(OrMinusOne(value));
   }
   SetFieldVector(fieldData, "CandidateMapStretch", stretch);
-  const int kept = refined.Choice.Kept;
-  const double keptScore = refined.Choice.ByStretch
-    ? refined.Choice.Stretch[kept]
-    : refined.Screened[kept].CurvatureDifference;
-  const double confidence[3] = { OrMinusOne(keptScore),
-    static_cast<double>(refined.Choice.RunnerUp), OrMinusOne(refined.Choice.Margin) };
+  const mobius::CandidateChoice& choice = refined.Choice;
+  const int kept = choice.Kept;
+  const double keptScore =
+    choice.ByFinishedMaps ? choice.Score[kept] * choice.Stretch[kept] : choice.Score[kept];
+  const double confidence[3] = { OrMinusOne(keptScore), static_cast<double>(choice.RunnerUp),
+    OrMinusOne(choice.Margin) };
   mobius::vtk::SetFieldValues(fieldData, "RefinementConfidence", confidence, 3);
   SetFieldString(fieldData, "RefinementChoice", ChoiceName(refined, candidate));
   SetFieldString(fieldData, "RefinementChoiceSummary", ChoiceSummary(refined, candidate));

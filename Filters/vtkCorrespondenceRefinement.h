@@ -20,9 +20,9 @@
  * mean curvature best (eigenfunctions cannot tell a body's front from its back, so the map
  * of a body turned half a turn is as orthogonal as the right one; faces, toes and kneecaps
  * tell them apart). When the runner-up comes within 10%, both maps are finished and the one
- * that stretches the surface less is kept (between bodies of different proportions the
- * curvatures differ for real; a turned map stays stretched where the front and the back
- * differ). `Candidate` keeps a given candidate instead.
+ * with the lower product of curvature difference and mean edge stretch is kept (between
+ * bodies of different proportions the curvatures differ for real; a turned map stays
+ * stretched where the front and the back differ). `Candidate` keeps a given candidate instead.
  *
  * Inputs: port 0 `Source`, the output of vtkSO3Register (the source's spherical map,
  * aligned; its field data `Rotation` and `CandidateTransforms` are used when present);
@@ -49,18 +49,21 @@
  * - `CandidateMapStretch` (per candidate): the mean edge stretch of its finished map (as
  *   `RefinementMeanStretch`) for the kept candidate and, when the runner-up came within 10%
  *   by curvature, for the runner-up too, whose map is then finished as well and the one
- *   that stretches the surface less kept; -1 for a map not finished;
- * - `RefinementChoice` (string): what decided, "curvature", "map stretch",
- *   "orthogonality" (a surface without curvature) or "given" (`Candidate`);
+ *   with the lower product of curvature difference and stretch kept; -1 for a map not
+ *   finished;
+ * - `RefinementChoice` (string): what decided, "curvature", "curvature and map stretch",
+ *   "orthogonality" (a surface without curvature; "orthogonality and map stretch") or
+ *   "given" (`Candidate`);
  * - `RefinementChoiceSummary` (string): the same in one sentence, with the runner-up and
  *   how close it came, and the advice to look at it when it is near-equal (ParaView's
  *   Information panel shows it);
  * - `RefinementConfidence` (3 values): the kept candidate's score by what decided (its
- *   curvature difference, or its finished map's stretch), the runner-up (the best other
- *   candidate of the expected orientation whose map differs; -1 if none) and the margin,
- *   (runner-up's score - kept's) / kept's (-1 without a runner-up): below 0.05 the two are
- *   near-equal and the map may be the wrong one of two (check it, and keep the other with
- *   `Candidate`);
+ *   curvature difference, the orthogonality residual where a surface has no curvature; when
+ *   both finished maps were compared, that times its finished map's stretch), the
+ *   runner-up (the best other candidate of the expected orientation whose map differs; -1
+ *   if none) and the margin, (runner-up's score - kept's) / kept's (-1 without a runner-up
+ *   or when the kept score is 0): below 0.05 the two are near-equal and the map may be the
+ *   wrong one of two (check it, and keep the other with `Candidate`);
  * - `RefinementMeanStretch`: the area-weighted mean of the point array `MapStretch`, per
  *   vertex the mean |log| of how the map stretches the edges around it (0 for an isometry;
  *   color the map by it to see where it can be trusted);

@@ -71,10 +71,14 @@ void TestChoice()
   MOBIUS_CHECK(choice.RunnerUp == 2); // 3 is candidate 1's map again
   MOBIUS_CHECK_NEAR(choice.Margin, 0.02, 1e-12);
   MOBIUS_CHECK(choice.Margin < kNearEqualMargin);
+  MOBIUS_CHECK(choice.Score == std::vector<double>({ 0.5, 1.0, 1.02, 1.01 }));
   // Without curvature (a surface had none) the orthogonality residual decides.
   std::vector<SampleMap> noCurvature = screened;
   noCurvature[2].CurvatureDifference = std::numeric_limits<double>::quiet_NaN();
-  MOBIUS_CHECK(ChooseCandidate(noCurvature, { false, true, true, true }, target).Kept == 2);
+  const CandidateChoice orthogonal =
+    ChooseCandidate(noCurvature, { false, true, true, true }, target);
+  MOBIUS_CHECK(orthogonal.Kept == 2);
+  MOBIUS_CHECK(orthogonal.Score == std::vector<double>({ 0.1, 0.3, 0.2, 0.2 }));
   // One map only: no runner-up, an infinite margin.
   const CandidateChoice alone = ChooseCandidate({ screened[1] }, { true }, target);
   MOBIUS_CHECK(alone.Kept == 0 && alone.RunnerUp == -1 && std::isinf(alone.Margin));
@@ -91,26 +95,32 @@ void MakeEllipsoid(int levels, double xScale, double zScale, Points& sphere,
   points.col(2) *= zScale;
 }
 
-// Two finished maps: the one that stretches the surface less is kept, the margin is measured
-// on the stretch, and only the two finished candidates have a stretch.
-void TestChooseByStretch()
+// Two finished maps: the one with the lower product of its score and its stretch is kept,
+// the margin is measured on the product, and only the two finished candidates have a
+// stretch. A near tie in one measure leaves the decision to the other.
+void TestChooseByFinishedMaps()
 {
   CandidateChoice choice;
   choice.Kept = 1;
   choice.RunnerUp = 2;
+  choice.Score = { 3.0, 2.0, 2.02, 4.0 };
   choice.Margin = 0.01;
-  ChooseByStretch(choice, 4, 0.2, 0.15);
-  MOBIUS_CHECK(choice.ByStretch && choice.Kept == 2 && choice.RunnerUp == 1);
-  MOBIUS_CHECK_NEAR(choice.Margin, (0.2 - 0.15) / 0.15, 1e-12);
+  // The scores nearly tie, the runner-up stretches less: it is kept.
+  ChooseByFinishedMaps(choice, 4, 0.2, 0.15);
+  MOBIUS_CHECK(choice.ByFinishedMaps && choice.Kept == 2 && choice.RunnerUp == 1);
+  MOBIUS_CHECK_NEAR(choice.Margin, (2.0 * 0.2 - 2.02 * 0.15) / (2.02 * 0.15), 1e-12);
   MOBIUS_CHECK(choice.Stretch.size() == 4 && std::isnan(choice.Stretch[0]) &&
     std::isnan(choice.Stretch[3]));
   MOBIUS_CHECK(choice.Stretch[1] == 0.2 && choice.Stretch[2] == 0.15);
+  // The stretches nearly tie (1%), the kept one's score is 5% lower: it stays, though the
+  // runner-up stretches a little less (a comparison by stretch alone would swap them).
   CandidateChoice stays;
   stays.Kept = 0;
   stays.RunnerUp = 3;
-  ChooseByStretch(stays, 4, 0.1, 0.12);
+  stays.Score = { 2.0, 3.0, 3.0, 2.1 };
+  ChooseByFinishedMaps(stays, 4, 0.101, 0.1);
   MOBIUS_CHECK(stays.Kept == 0 && stays.RunnerUp == 3);
-  MOBIUS_CHECK_NEAR(stays.Margin, 0.2, 1e-12);
+  MOBIUS_CHECK_NEAR(stays.Margin, (2.1 * 0.1 - 2.0 * 0.101) / (2.0 * 0.101), 1e-12);
 }
 
 // An ellipsoid with 5 landmarks near its ends, each pinned to itself: the identity keeps
@@ -223,7 +233,7 @@ int main()
 {
   TestEdgeStretch();
   TestChoice();
-  TestChooseByStretch();
+  TestChooseByFinishedMaps();
   TestLandmarkConsistency();
   TestSphereAnchor();
   return MOBIUS_TEST_RESULT();

@@ -16,12 +16,13 @@
 // limbs) the curvatures differ for real, and the screened map of the right candidate and
 // that of the half-turned body can keep them about equally well. When the runner-up comes
 // within kFinishRunnerUpMargin, both maps are finished (extended to every vertex and
-// polished) and the one that stretches the surface less is kept: the polish makes the right
-// map nearly as rigid as the two bodies allow, while a turned map must twist where the
-// front and the back differ (the feet, the face) and stays stretched there. Measured on
-// generated non-isometric human pairs with known answers: the curvature picks the right one
-// of two finalists on 44 of 49 pairs, the finished maps' stretch on 48 (docs/accuracy.md,
-// "Non-isometric pairs").
+// polished) and their stretch is weighed too: the polish makes the right map nearly as rigid
+// as the two bodies allow, while a turned map must twist where the front and the back differ
+// (the feet, the face) and stays stretched there. The map with the lower product of its
+// curvature difference and its finished map's mean edge stretch is kept, so that whichever
+// of the two tells the maps apart more clearly decides: on generated non-isometric human
+// pairs where the two finalists differ by at most 1% in one, the other told them apart
+// (docs/accuracy.md, "Non-isometric pairs").
 #ifndef mobius_CandidateChoice_h
 #define mobius_CandidateChoice_h
 
@@ -41,9 +42,9 @@ constexpr double kSameMapDistance = 0.05;
 constexpr double kNearEqualMargin = 0.05;
 
 /// Below this relative margin of the screened maps' score (with the geometric polish on),
-/// the runner-up's map is finished too and the two finished maps are compared by their mean
-/// edge stretch: the curvature chose the wrong one of two finalists at margins of 0.3-5.3%
-/// on generated non-isometric pairs, and twice that leaves room.
+/// the runner-up's map is finished too and the two are compared by score times stretch
+/// (ChooseByFinishedMaps): the curvature chose the wrong one of two finalists at margins of
+/// 0.3-5.3% on generated non-isometric pairs, and twice that leaves room.
 constexpr double kFinishRunnerUpMargin = 0.1;
 
 struct CandidateChoice
@@ -53,10 +54,15 @@ struct CandidateChoice
   /// -1 when there is none.
   int RunnerUp = -1;
   /// (runner-up's score - kept's) / kept's score, the score being what decided (the
-  /// criterion's, or the finished maps' stretch if ByStretch); infinite without a runner-up.
+  /// criterion's, or with ByFinishedMaps the criterion's times the finished map's stretch);
+  /// infinite without a runner-up.
   double Margin = std::numeric_limits<double>::infinity();
-  /// Both finished maps were compared by their stretch (ChooseByStretch), which decided.
-  bool ByStretch = false;
+  /// Per candidate, what the criterion compared (the screened map's curvature difference,
+  /// or its orthogonality residual).
+  std::vector<double> Score;
+  /// Both maps were finished and compared by score times stretch (ChooseByFinishedMaps),
+  /// which decided.
+  bool ByFinishedMaps = false;
   /// Per candidate, the mean edge stretch of its finished map (MeanEdgeStretch); NaN for a
   /// candidate whose map was not finished.
   std::vector<double> Stretch;
@@ -81,11 +87,12 @@ CandidateChoice ChooseCandidate(const std::vector<SampleMap>& screened,
   const std::vector<bool>& rightSide, const SpectralSurface& target,
   CandidateCriterion criterion = CandidateCriterion::Curvature);
 
-/// Decides between the kept candidate and its runner-up, both maps finished, by their mean
-/// edge stretch (the lower is kept): records both stretches, swaps Kept and RunnerUp if the
-/// runner-up's is lower, and measures the margin on the stretch. `candidates` is the number
-/// of candidates (the size of Stretch).
-void ChooseByStretch(
+/// Decides between the kept candidate and its runner-up, both maps finished, by the product
+/// of each one's Score and its finished map's mean edge stretch (the lower is kept): records
+/// both stretches, swaps Kept and RunnerUp if the runner-up's product is lower, and measures
+/// the margin on the product. `candidates` is the number of candidates (the size of
+/// Stretch).
+void ChooseByFinishedMaps(
   CandidateChoice& choice, size_t candidates, double keptStretch, double runnerUpStretch);
 
 /// Mean distance between the images of the same source samples under two sample maps, in

@@ -450,7 +450,7 @@ std::vector<bool> KeepingLandmarks(const SpectralSurface& source, const Spectral
   return keeping;
 }
 
-// Whether the runner-up's map is finished too and the two compared by their stretch: the
+// Whether the runner-up's map is finished too and the two compared with their stretch: the
 // refinement chooses, the polish is on (an unpolished map's stretch does not tell them
 // apart), and the runner-up came within kFinishRunnerUpMargin.
 bool FinishRunnerUp(const CandidateChoice& choice, const CorrespondenceRefinementOptions& options)
@@ -512,7 +512,7 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
     if (other.PolishError.empty())
     {
       const int before = refined.Choice.Kept;
-      ChooseByStretch(refined.Choice, refined.Screened.size(),
+      ChooseByFinishedMaps(refined.Choice, refined.Screened.size(),
         refined.Choice.Stretch[refined.Choice.Kept], DenseMapStretch(source, target, other.Dense));
       if (refined.Choice.Kept != before)
       {

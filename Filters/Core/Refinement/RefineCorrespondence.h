@@ -7,7 +7,7 @@
 // vertex and, on request, polished on the surfaces (SurfacePolish), on further request in
 // both directions, each point then averaged with the inverse of the other direction's map
 // (InverseAveraging). When the runner-up came close, its map is finished too and the two
-// finished maps are compared by their stretch (ChooseByStretch).
+// finished maps are compared by their score times their stretch (ChooseByFinishedMaps).
 #ifndef mobius_RefineCorrespondence_h
 #define mobius_RefineCorrespondence_h
 
