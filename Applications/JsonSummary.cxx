@@ -40,21 +40,48 @@ std::string Measured(double value)
   return value >= 0 ? Number(value) : "null";
 }
 
-// How sure the refinement is of its choice (RefinementConfidence): the kept map's curvature
-// difference, the runner-up (null if none) and the margin to it (null if none).
+// A one-value string field array's value; empty if there is none.
+std::string FieldString(vtkPolyData* data, const char* name)
+{
+  auto array = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
+  return array && array->GetNumberOfValues() > 0 ? array->GetValue(0) : std::string();
+}
+
+// How sure the refinement is of its choice (RefinementConfidence, RefinementChoice): what
+// decided, the kept map's curvature difference, its finished map's stretch, the runner-up
+// (null if none) and the margin to it by what decided (null if none).
 std::string Confidence(vtkPolyData* refined)
 {
   vtkDataArray* confidence = refined->GetFieldData()->GetArray("RefinementConfidence");
-  if (!confidence || confidence->GetNumberOfComponents() * confidence->GetNumberOfTuples() < 3)
+  vtkDataArray* curvature = refined->GetFieldData()->GetArray("CandidateCurvatureDifferences");
+  vtkDataArray* stretch = refined->GetFieldData()->GetArray("CandidateMapStretch");
+  const vtkIdType kept = static_cast<vtkIdType>(FieldValue(refined, "RefinementCandidate"));
+  if (!confidence || confidence->GetNumberOfComponents() * confidence->GetNumberOfTuples() < 3 ||
+    !curvature || !stretch || kept < 0 || kept >= curvature->GetNumberOfTuples() ||
+    kept >= stretch->GetNumberOfTuples())
   {
     return "null";
   }
+  const std::string choice = FieldString(refined, "RefinementChoice");
   const bool runnerUp = confidence->GetComponent(0, 1) >= 0;
   std::ostringstream out;
-  out << "{\"curvature_difference\": " << Measured(confidence->GetComponent(0, 0))
+  out << "{\"decided_by\": " << (choice.empty() ? std::string("null") : Quoted(choice))
+      << ", \"curvature_difference\": " << Measured(curvature->GetComponent(kept, 0))
+      << ", \"map_stretch\": " << Measured(stretch->GetComponent(kept, 0))
       << ", \"runner_up\": " << (runnerUp ? Number(confidence->GetComponent(0, 1)) : "null")
       << ", \"margin\": " << (runnerUp ? Number(confidence->GetComponent(0, 2)) : "null") << "}";
   return out.str();
+}
+
+// A per-candidate figure, or null where the array is missing or short.
+std::string CandidateFigure(vtkPolyData* refined, const char* name, vtkIdType c, bool measured)
+{
+  vtkDataArray* array = refined->GetFieldData()->GetArray(name);
+  if (!array || c >= array->GetNumberOfTuples())
+  {
+    return "null";
+  }
+  return measured ? Measured(array->GetComponent(c, 0)) : Number(array->GetComponent(c, 0));
 }
 
 // What the refinement chose and why: every candidate's score, the kept one's index.
@@ -74,16 +101,18 @@ std::string Refinement(vtkPolyData* refined, bool done)
       << ", \"confidence\": " << Confidence(refined)
       << ", \"candidates\": [";
   vtkDataArray* residuals = refined->GetFieldData()->GetArray("CandidateOrthogonalityResiduals");
-  vtkDataArray* coverage = refined->GetFieldData()->GetArray("CandidateTargetCoverage");
-  vtkDataArray* orientation = refined->GetFieldData()->GetArray("CandidateOrientationAgreement");
-  vtkDataArray* curvature = refined->GetFieldData()->GetArray("CandidateCurvatureDifferences");
-  for (vtkIdType c = 0; residuals && coverage && orientation && curvature &&
-       c < residuals->GetNumberOfTuples(); ++c)
+  for (vtkIdType c = 0; residuals && c < residuals->GetNumberOfTuples(); ++c)
   {
     out << (c ? ", " : "") << "{\"orthogonality_residual\": " << Number(residuals->GetComponent(c, 0))
-        << ", \"target_coverage\": " << Number(coverage->GetComponent(c, 0))
-        << ", \"orientation_agreement\": " << Number(orientation->GetComponent(c, 0))
-        << ", \"curvature_difference\": " << Measured(curvature->GetComponent(c, 0)) << "}";
+        << ", \"target_coverage\": "
+        << CandidateFigure(refined, "CandidateTargetCoverage", c, false)
+        << ", \"orientation_agreement\": "
+        << CandidateFigure(refined, "CandidateOrientationAgreement", c, false)
+        << ", \"curvature_difference\": "
+        << CandidateFigure(refined, "CandidateCurvatureDifferences", c, true)
+        << ", \"landmark_distance_difference\": "
+        << CandidateFigure(refined, "CandidateLandmarkDistanceDifferences", c, false)
+        << ", \"map_stretch\": " << CandidateFigure(refined, "CandidateMapStretch", c, true) << "}";
   }
   out << "]}";
   return out.str();

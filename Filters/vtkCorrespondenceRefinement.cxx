@@ -19,6 +19,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
+#include "vtkStringArray.h"
 
 #include <Eigen/Core>
 
@@ -220,8 +221,61 @@ mobius::CorrespondenceRefinementOptions RefinementOptions(
   return options;
 }
 
-// The warning when the kept candidate's runner-up keeps the curvature almost as well;
-// empty when it does not (or there is none).
+// How the kept candidate was chosen, as the field data RefinementChoice and --json say it.
+std::string ChoiceName(const mobius::RefinedCorrespondence& refined, int candidate)
+{
+  if (candidate >= 0)
+  {
+    return "given";
+  }
+  const double curvature = refined.Screened[refined.Choice.Kept].CurvatureDifference;
+  const std::string criterion = std::isfinite(curvature) ? "curvature" : "orthogonality";
+  return refined.Choice.ByFinishedMaps ? criterion + " and map stretch" : criterion;
+}
+
+// One sentence on the choice for the field data RefinementChoiceSummary, which ParaView's
+// Information panel shows: what was kept and by what, and how close the runner-up came.
+std::string ChoiceSummary(const mobius::RefinedCorrespondence& refined, int candidate)
+{
+  const mobius::CandidateChoice& choice = refined.Choice;
+  std::ostringstream summary;
+  summary << "Candidate " << choice.Kept;
+  if (candidate >= 0)
+  {
+    summary << " kept as given (Candidate).";
+    return summary.str();
+  }
+  const std::string by = ChoiceName(refined, candidate);
+  summary << " kept by " << by;
+  if (choice.ByFinishedMaps)
+  {
+    summary << " (score " << choice.Score[choice.Kept] << " times stretch "
+            << choice.Stretch[choice.Kept]
+            << "; both maps finished and compared, their scores having come within "
+            << 100 * mobius::kFinishRunnerUpMargin << "%)";
+  }
+  else
+  {
+    summary << " (score " << choice.Score[choice.Kept] << ")";
+  }
+  if (choice.RunnerUp < 0)
+  {
+    summary << "; no other candidate of the expected orientation gave a different map.";
+    return summary.str();
+  }
+  summary << "; runner-up " << choice.RunnerUp << " is " << 100 * choice.Margin << "% worse";
+  if (choice.Margin < mobius::kNearEqualMargin)
+  {
+    summary << ": near-equal, check the map and see the other with Candidate = "
+            << choice.RunnerUp;
+  }
+  summary << ".";
+  return summary.str();
+}
+
+// The warning when the kept candidate's runner-up came almost as close by what decided
+// (the screened maps' curvature, or the finished maps' stretch); empty when it did not (or
+// there is none).
 std::string NearEqualCandidatesWarning(const mobius::CandidateChoice& choice)
 {
   if (choice.RunnerUp < 0 || !(choice.Margin < mobius::kNearEqualMargin))
@@ -230,8 +284,11 @@ std::string NearEqualCandidatesWarning(const mobius::CandidateChoice& choice)
   }
   std::ostringstream message;
   message << "Candidates " << choice.Kept << " (kept) and " << choice.RunnerUp
-          << " give different maps that keep the surfaces' curvature almost equally well "
-             "(margin "
+          << (choice.ByFinishedMaps
+                 ? " give different maps that, finished, keep the surfaces' curvature and "
+                   "stretch them almost equally (margin "
+                 : " give different maps that keep the surfaces' curvature almost equally "
+                   "well (margin ")
           << 100 * choice.Margin
           << "%): the map may be the wrong one of two, such as a body turned half a turn. "
              "Check it, and keep the other with Candidate = "
@@ -346,6 +403,15 @@ double OrMinusOne(double value)
   return std::isfinite(value) ? value : -1.0;
 }
 
+void SetFieldString(vtkFieldData* fieldData, const char* name, const std::string& value)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fieldData->RemoveArray(name);
+  fieldData->AddArray(array);
+}
+
 void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector<double>& values)
 {
   vtkNew<vtkDoubleArray> array;
@@ -361,8 +427,9 @@ void SetFieldVector(vtkFieldData* fieldData, const char* name, const std::vector
 
 // The candidates' screening figures, the choice and the refined map's figures as field
 // data, with the MapStretch point array.
-void AddRefinementFieldData(const mobius::RefinedCorrespondence& refined, const MapInput& source,
-  const double stageSeconds[4], const bool stored[2], int threads, vtkPolyData* output)
+void AddRefinementFieldData(const mobius::RefinedCorrespondence& refined, int candidate,
+  const MapInput& source, const double stageSeconds[4], const bool stored[2], int threads,
+  vtkPolyData* output)
 {
   vtkFieldData* fieldData = output->GetFieldData();
   using mobius::vtk::SetFieldInteger;
@@ -380,9 +447,23 @@ void AddRefinementFieldData(const mobius::RefinedCorrespondence& refined, const 
   SetFieldVector(fieldData, "CandidateTargetCoverage", coverage);
   SetFieldVector(fieldData, "CandidateOrientationAgreement", orientation);
   SetFieldVector(fieldData, "CandidateCurvatureDifferences", curvature);
-  const double confidence[3] = { OrMinusOne(refined.Screened[refined.Choice.Kept].CurvatureDifference),
-    static_cast<double>(refined.Choice.RunnerUp), OrMinusOne(refined.Choice.Margin) };
+  SetFieldVector(
+    fieldData, "CandidateLandmarkDistanceDifferences", refined.LandmarkDistanceDifferences);
+  std::vector<double> stretch;
+  for (double value : refined.Choice.Stretch)
+  {
+    stretch.push_back(OrMinusOne(value));
+  }
+  SetFieldVector(fieldData, "CandidateMapStretch", stretch);
+  const mobius::CandidateChoice& choice = refined.Choice;
+  const int kept = choice.Kept;
+  const double keptScore =
+    choice.ByFinishedMaps ? choice.Score[kept] * choice.Stretch[kept] : choice.Score[kept];
+  const double confidence[3] = { OrMinusOne(keptScore), static_cast<double>(choice.RunnerUp),
+    OrMinusOne(choice.Margin) };
   mobius::vtk::SetFieldValues(fieldData, "RefinementConfidence", confidence, 3);
+  SetFieldString(fieldData, "RefinementChoice", ChoiceName(refined, candidate));
+  SetFieldString(fieldData, "RefinementChoiceSummary", ChoiceSummary(refined, candidate));
   AddMapStretch(source, output);
   SetFieldValue(fieldData, "RefinementOrientationAgreement", refined.Kept.OrientationAgreement);
   SetFieldInteger(fieldData, "RefinementOrientationRepaired", refined.WrongOrientation ? 1 : 0);
@@ -497,8 +578,8 @@ int vtkCorrespondenceRefinement::ComputeOutput(
   AssembleOutput(this, inputs, maps, refined, output);
   const double stageSeconds[4] = { basisTime.count(), refined.CandidateSeconds,
     refined.ExtensionSeconds, refined.PolishSeconds };
-  AddRefinementFieldData(
-    refined, maps[0], this->RecordTimings ? stageSeconds : nullptr, stored, threads, output);
+  AddRefinementFieldData(refined, this->Candidate, maps[0],
+    this->RecordTimings ? stageSeconds : nullptr, stored, threads, output);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -19,7 +19,10 @@
  * continues the one of the expected orientation whose images keep the source's smoothed
  * mean curvature best (eigenfunctions cannot tell a body's front from its back, so the map
  * of a body turned half a turn is as orthogonal as the right one; faces, toes and kneecaps
- * tell them apart). `Candidate` keeps a given candidate instead.
+ * tell them apart). When the runner-up comes within 10%, both maps are finished and the one
+ * with the lower product of curvature difference and mean edge stretch is kept (between
+ * bodies of different proportions the curvatures differ for real; a turned map stays
+ * stretched where the front and the back differ). `Candidate` keeps a given candidate instead.
  *
  * Inputs: port 0 `Source`, the output of vtkSO3Register (the source's spherical map,
  * aligned; its field data `Rotation` and `CandidateTransforms` are used when present);
@@ -38,12 +41,29 @@
  *   image keeps its orientation (near 1 for a rotation's map, near 0 for a mirror image);
  * - `CandidateCurvatureDifferences` (per candidate): the mean |H_source - H_target| of the
  *   smoothed mean curvatures at the samples and their images, what the choice compares
- *   (-1 where a surface's curvature could not be computed);
- * - `RefinementConfidence` (3 values): the kept candidate's curvature difference, the
- *   runner-up (the best other candidate of the expected orientation whose map differs;
- *   -1 if none) and the margin, (runner-up's difference - kept's) / kept's (-1 without a
- *   runner-up): below 0.05 the two are near-equal and the map may be the wrong one of two
- *   (check it, and keep the other with `Candidate`);
+ *   first (-1 where a surface's curvature could not be computed);
+ * - `CandidateLandmarkDistanceDifferences` (per candidate): with landmarks, how far its
+ *   screened map moves the samples' distances to the landmarks (in units of sqrt(area); a
+ *   candidate more than 20% above the lowest is not kept: a map can keep every landmark
+ *   and still turn the body between them); 0 without landmarks;
+ * - `CandidateMapStretch` (per candidate): the mean edge stretch of its finished map (as
+ *   `RefinementMeanStretch`) for the kept candidate and, when the runner-up came within 10%
+ *   by curvature, for the runner-up too, whose map is then finished as well and the one
+ *   with the lower product of curvature difference and stretch kept; -1 for a map not
+ *   finished;
+ * - `RefinementChoice` (string): what decided, "curvature", "curvature and map stretch",
+ *   "orthogonality" (a surface without curvature; "orthogonality and map stretch") or
+ *   "given" (`Candidate`);
+ * - `RefinementChoiceSummary` (string): the same in one sentence, with the runner-up and
+ *   how close it came, and the advice to look at it when it is near-equal (ParaView's
+ *   Information panel shows it);
+ * - `RefinementConfidence` (3 values): the kept candidate's score by what decided (its
+ *   curvature difference, the orthogonality residual where a surface has no curvature; when
+ *   both finished maps were compared, that times its finished map's stretch), the
+ *   runner-up (the best other candidate of the expected orientation whose map differs; -1
+ *   if none) and the margin, (runner-up's score - kept's) / kept's (-1 without a runner-up
+ *   or when the kept score is 0): below 0.05 the two are near-equal and the map may be the
+ *   wrong one of two (check it, and keep the other with `Candidate`);
  * - `RefinementMeanStretch`: the area-weighted mean of the point array `MapStretch`, per
  *   vertex the mean |log| of how the map stretches the edges around it (0 for an isometry;
  *   color the map by it to see where it can be trusted);

@@ -12,6 +12,7 @@
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
@@ -89,6 +90,7 @@ vtkSO3Register::vtkSO3Register()
   this->SmoothingTime = defaults.SmoothingTime;
   this->TransformMode = defaults.TransformMode;
   this->NumberOfCandidates = defaults.NumberOfCandidates;
+  this->CandidateSeparation = defaults.CandidateSeparation;
   this->NumberOfThreads = defaults.NumberOfThreads;
   this->LandmarkMode = defaults.LandmarkMode;
 }
@@ -216,6 +218,7 @@ int vtkSO3Register::ComputeOutput(
 
   mobius::SO3CorrelationOptions options;
   options.NumberOfCandidates = this->NumberOfCandidates;
+  options.MinimumCandidateSeparation = vtkMath::RadiansFromDegrees(this->CandidateSeparation);
   options.NumberOfThreads = threads;
   options.Reflections = static_cast<mobius::SO3ReflectionMode>(this->TransformMode);
   // The correlation (grid search and Newton refinement) is half the work or more at high
@@ -337,5 +340,6 @@ void vtkSO3Register::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValueMode: " << this->ValueMode << "\n";
   os << indent << "TransformMode: " << this->TransformMode << "\n";
   os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "CandidateSeparation: " << this->CandidateSeparation << "\n";
   os << indent << "LandmarkMode: " << this->LandmarkMode << "\n";
 }

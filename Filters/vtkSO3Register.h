@@ -145,6 +145,17 @@ public:
 
   ///@{
   /**
+   * Smallest angle (degrees) between two candidates of the same determinant: peaks closer
+   * to a better one are not reported. Default 60: a correlation peak has neighbours 10-45
+   * degrees away that refine to the same map, while a shape's ambiguities (a body turned
+   * half a turn, or upside down) are far apart.
+   */
+  vtkSetClampMacro(CandidateSeparation, double, 0.0, 180.0);
+  vtkGetMacro(CandidateSeparation, double);
+  ///@}
+
+  ///@{
+  /**
    * With TransformMode ROTATIONS or REFLECTIONS, also find the best transform of the other
    * kind by a cheap coarse search (`MirrorCheckErrors` in the field data),
    * and warn when it aligns the shapes far better: a mirrored pair registered by rotations
@@ -178,6 +189,7 @@ protected:
   int ValueMode = 1;
   int TransformMode;
   int NumberOfCandidates;
+  double CandidateSeparation;
   bool CheckMirroring = true;
   int LandmarkMode;
 

@@ -129,7 +129,12 @@ def check_result(label, output, points=None, self_map=False, sources=None, off_s
         moved = numpy.linalg.norm(row[8:11] - points[source]) / scale if points is not None else 0.0
         same_place = points is not None and numpy.linalg.norm(
             numpy.subtract(points[target], points[source])) <= 1e-12 * scale
-        if (target != source and not same_place) or moved > 1e-3:
+        # The corner of largest weight names the vertex unless the image is the source's own
+        # position to the last digit: then a tie in the weights (a corner of several
+        # triangles, coincident points) may name another corner, and which one the CPU's
+        # last bits decide (glibc's FMA or SSE2 routines).
+        exact = moved <= 1e-12
+        if (target != source and not same_place and not exact) or moved > 1e-3:
             wrong.append((source, target, moved))
     check(not wrong, f"{label}: {len(wrong)} of {len(rows)} vertices not mapped onto themselves: {wrong[:3]}")
 

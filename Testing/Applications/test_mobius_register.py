@@ -58,6 +58,27 @@ if summary:
     check(refinement is not None and len(refinement["candidates"]) >= 1 and
           0 <= refinement["kept_candidate"] < len(refinement["candidates"]) and
           refinement["basis_size"] == 80, f"demo refinement summary {refinement}")
+    # The confidence: what decided, and each candidate's scores; the kept map's stretch is
+    # measured, and only when both finalists were finished has a second map one, the kept map
+    # then having the lower product of curvature difference and stretch.
+    if refinement:
+        confidence, candidates = refinement["confidence"], refinement["candidates"]
+        kept = candidates[refinement["kept_candidate"]]
+        finished = [c for c in candidates if c["map_stretch"] is not None]
+        check(confidence["decided_by"] in ("curvature", "curvature and map stretch") and
+              kept["map_stretch"] is not None and kept["map_stretch"] >= 0 and
+              confidence["map_stretch"] == kept["map_stretch"] and
+              confidence["curvature_difference"] == kept["curvature_difference"] and
+              all(c["landmark_distance_difference"] == 0 for c in candidates),
+              f"demo confidence {confidence} {candidates}")
+        if confidence["decided_by"] == "curvature and map stretch":
+            other = candidates[confidence["runner_up"]]
+            check(len(finished) == 2 and other["map_stretch"] is not None and
+                  kept["curvature_difference"] * kept["map_stretch"] <=
+                  other["curvature_difference"] * other["map_stretch"],
+                  f"demo finished maps {candidates}")
+        else:
+            check(len(finished) == 1, f"demo: one finished map {candidates}")
 with open(os.path.join(work, "mobius-demo", "demo.csv")) as csv:
     header = csv.readline().strip().split(",")
     rows = csv.readlines()

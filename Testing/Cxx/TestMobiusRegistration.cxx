@@ -16,6 +16,7 @@
 #include "vtkIdList.h"
 #include "vtkMath.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 
 #ifndef MOBIUS_MESH_DIR
 #error "TestMobiusRegistration needs CGAL's meshes (MOBIUS_MESH_DIR); CMake lists it only with them"
@@ -184,6 +185,20 @@ int CompareWithChain(vtkPolyData* source, vtkPolyData* target, bool refine)
   failures += CheckMapOnTarget(whole->GetOutput(3), a, target, refine);
   MOBIUS_EXPECT((field(a, "MobiusCorrespondence.ClampedPoints") != nullptr) == refine);
   MOBIUS_EXPECT((field(a, "RefinementOrthogonalityResidual") != nullptr) == refine);
+  // The refinement's confidence reaches the filter's output (ParaView's Information panel):
+  // the sentence on the choice names the kept candidate, and the kept map's stretch is
+  // measured.
+  auto summary = vtkStringArray::SafeDownCast(
+    a->GetFieldData()->GetAbstractArray("RefinementChoiceSummary"));
+  MOBIUS_EXPECT((summary != nullptr) == refine);
+  if (refine && summary && field(a, "RefinementCandidate") && field(a, "CandidateMapStretch"))
+  {
+    const int kept = static_cast<int>(field(a, "RefinementCandidate")->GetComponent(0, 0));
+    const std::string opening = "Candidate " + std::to_string(kept) + " kept by ";
+    MOBIUS_EXPECT(summary->GetValue(0).rfind(opening, 0) == 0);
+    MOBIUS_EXPECT(field(a, "CandidateMapStretch")->GetComponent(kept, 0) >= 0);
+    std::cout << summary->GetValue(0) << "\n";
+  }
   std::cout << (refine ? "refined" : "Moebius") << " map: " << a->GetNumberOfPoints()
             << " points, " << a->GetFieldData()->GetNumberOfArrays() << " field arrays\n";
   return failures;

@@ -72,6 +72,8 @@ int TestParameterDefaults(int, char*[])
   ExpectEqual("register TransformMode", registration->GetTransformMode(), core.TransformMode);
   ExpectEqual("register NumberOfCandidates", registration->GetNumberOfCandidates(),
     core.NumberOfCandidates);
+  ExpectEqual("register CandidateSeparation", registration->GetCandidateSeparation(),
+    core.CandidateSeparation);
   ExpectEqual("register NumberOfThreads", registration->GetNumberOfThreads(), core.NumberOfThreads);
   ExpectClamp("register NumberOfThreads range", registration.Get(),
     &vtkSO3Register::SetNumberOfThreads, &vtkSO3Register::GetNumberOfThreads,

@@ -1,5 +1,7 @@
 #include "EdgeStretch.h"
 
+#include "CotangentLaplacian.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -52,5 +54,11 @@ Vector EdgeStretch(const Points& source, const Triangles& triangles, const Point
     stretch[v] = count[v] > 0 ? stretch[v] / count[v] : 0.0;
   }
   return stretch;
+}
+
+double MeanEdgeStretch(const Points& source, const Triangles& triangles, const Points& mapped)
+{
+  const Vector mass = LumpedMass(source, triangles);
+  return mass.sum() > 0 ? EdgeStretch(source, triangles, mapped).dot(mass) / mass.sum() : 0.0;
 }
 }

@@ -13,6 +13,9 @@ namespace mobius
 /// where it doubles or halves them. An edge whose source length is zero is left out; a
 /// vertex with no edge left gets 0.
 Vector EdgeStretch(const Points& source, const Triangles& triangles, const Points& mapped);
+
+/// The area-weighted mean of EdgeStretch over the source's vertices (their lumped masses).
+double MeanEdgeStretch(const Points& source, const Triangles& triangles, const Points& mapped);
 }
 
 #endif

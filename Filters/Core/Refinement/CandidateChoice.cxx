@@ -3,6 +3,7 @@
 #include "CotangentLaplacian.h"
 
 #include <cmath>
+#include <utility>
 
 namespace mobius
 {
@@ -12,6 +13,12 @@ namespace
 double Score(const SampleMap& map, bool useCurvature)
 {
   return useCurvature ? map.CurvatureDifference : map.OrthogonalityResidual;
+}
+
+// (runner-up's score - kept's) / kept's score; infinite when the kept one's is 0.
+double RelativeMargin(double kept, double runnerUp)
+{
+  return kept > 0 ? (runnerUp - kept) / kept : std::numeric_limits<double>::infinity();
 }
 }
 
@@ -55,6 +62,10 @@ CandidateChoice ChooseCandidate(const std::vector<SampleMap>& screened,
       choice.Kept = static_cast<int>(c);
     }
   }
+  for (const SampleMap& map : screened)
+  {
+    choice.Score.push_back(Score(map, useCurvature));
+  }
   const SampleMap& kept = screened[static_cast<size_t>(choice.Kept)];
   for (size_t c = 0; c < screened.size(); ++c)
   {
@@ -70,11 +81,30 @@ CandidateChoice ChooseCandidate(const std::vector<SampleMap>& screened,
   }
   if (choice.RunnerUp >= 0)
   {
-    const double keptScore = Score(kept, useCurvature);
-    const double runnerUpScore = Score(screened[static_cast<size_t>(choice.RunnerUp)], useCurvature);
-    choice.Margin = keptScore > 0 ? (runnerUpScore - keptScore) / keptScore
-                                  : std::numeric_limits<double>::infinity();
+    choice.Margin = RelativeMargin(choice.Score[static_cast<size_t>(choice.Kept)],
+      choice.Score[static_cast<size_t>(choice.RunnerUp)]);
   }
   return choice;
+}
+
+void ChooseByFinishedMaps(
+  CandidateChoice& choice, size_t candidates, double keptStretch, double runnerUpStretch)
+{
+  const size_t kept = static_cast<size_t>(choice.Kept);
+  const size_t runnerUp = static_cast<size_t>(choice.RunnerUp);
+  choice.Stretch.assign(candidates, std::numeric_limits<double>::quiet_NaN());
+  choice.Stretch[kept] = keptStretch;
+  choice.Stretch[runnerUp] = runnerUpStretch;
+  choice.ByFinishedMaps = true;
+  // The relative differences of the two measures add (to first order): a near tie in one
+  // leaves the decision to the other.
+  double keptProduct = choice.Score[kept] * keptStretch;
+  double runnerUpProduct = choice.Score[runnerUp] * runnerUpStretch;
+  if (runnerUpProduct < keptProduct)
+  {
+    std::swap(choice.Kept, choice.RunnerUp);
+    std::swap(keptProduct, runnerUpProduct);
+  }
+  choice.Margin = RelativeMargin(keptProduct, runnerUpProduct);
 }
 }

@@ -1,6 +1,8 @@
 #include "RefineCorrespondence.h"
 
+#include "EdgeStretch.h"
 #include "InverseAveraging.h"
+#include "LandmarkConsistency.h"
 #include "LandmarkAlignment.h"
 #include "ParallelFor.h"
 #include "SurfacePolish.h"
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <limits>
 
 namespace mobius
 {
@@ -162,16 +165,16 @@ std::vector<SampleMap> ScreenCandidates(const SpectralSurface& source,
   return screened;
 }
 
-// The kept candidate's map, its orientation repaired if it is wrong, grown to the full
+// A candidate's screened map, its orientation repaired if it is wrong, grown to the full
 // basis; `parameters` ends as the growth's, which the extension goes on with.
-SampleMap FinishKeptMap(const SpectralSurface& source, const SpectralSurface& target,
-  const RefinedCorrespondence& refined, bool preserve, const SampleAnchor& anchor,
+SampleMap FinishSampleMap(const SpectralSurface& source, const SpectralSurface& target,
+  const SampleMap& screened, bool wrongOrientation, bool preserve, const SampleAnchor& anchor,
   const CorrespondenceRefinementOptions& options, ZoomOutParameters& parameters)
 {
-  SampleMap kept = refined.Screened[refined.Choice.Kept];
+  SampleMap kept = screened;
   // A map that still has the wrong orientation (no candidate reached the right one) is
   // retried from its low-frequency functional map with signs flipped.
-  if (refined.WrongOrientation && options.RepairOrientation)
+  if (wrongOrientation && options.RepairOrientation)
   {
     kept = RepairOrientation(source, target, kept, preserve, 9, parameters, anchor);
   }
@@ -323,31 +326,44 @@ void PolishBoth(const SpectralSurface& source, const SpectralSurface& target,
   });
 }
 
-// The kept map extended to every vertex and polished as the options ask. In both
-// directions, each is extended on its own thread, both are polished at once, meeting
+// One candidate's map finished: its sample map (orientation repaired, grown to the full
+// basis) and its dense map (extended and polished as the options ask), with the seconds
+// each took.
+struct FinishedMap
+{
+  SampleMap Samples;
+  bool WrongOrientation = false;
+  DenseMap Dense;
+  std::string PolishError;
+  double SampleSeconds = 0, ExtensionSeconds = 0, PolishSeconds = 0;
+};
+
+// The finished sample map extended to every vertex and polished as the options ask. In
+// both directions, each is extended on its own thread, both are polished at once, meeting
 // between iterations (PolishBoth; on surfaces of up to kMeetingMaximumVertices), and the
 // forward map is averaged with the inverse of the other (InverseAveraging).
 void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target,
   const std::vector<std::pair<Index, Index>>& landmarks, const ZoomOutParameters& parameters,
-  const CorrespondenceRefinementOptions& options, RefinedCorrespondence& refined)
+  const CorrespondenceRefinementOptions& options, FinishedMap& finished)
 {
   const int threads = ResolveThreadCount(options.ZoomOut.NumberOfThreads);
   if (!options.GeometricPolish || !options.BothDirections)
   {
     DirectionMap forward = ExtendAndPolish(
-      source, target, refined.Kept, parameters, landmarks, options.GeometricPolish, threads);
-    refined.Dense = std::move(forward.Dense);
-    refined.PolishError = forward.PolishError;
-    refined.ExtensionSeconds = forward.ExtensionSeconds;
+      source, target, finished.Samples, parameters, landmarks, options.GeometricPolish, threads);
+    finished.Dense = std::move(forward.Dense);
+    finished.PolishError = forward.PolishError;
+    finished.ExtensionSeconds = forward.ExtensionSeconds;
     return;
   }
-  const SampleMap reverseSamples = ReverseSampleMap(source, target, refined.Kept, threads);
+  const SampleMap reverseSamples = ReverseSampleMap(source, target, finished.Samples, threads);
   const int each = std::max(1, threads / 2);
   DirectionMap forward, reverse;
   ParallelFor(2, threads, [&](int direction, int) {
     if (direction == 0)
     {
-      forward = ExtendAndPolish(source, target, refined.Kept, parameters, landmarks, false, each);
+      forward =
+        ExtendAndPolish(source, target, finished.Samples, parameters, landmarks, false, each);
     }
     else
     {
@@ -355,15 +371,92 @@ void FinishDenseMap(const SpectralSurface& source, const SpectralSurface& target
         target, source, reverseSamples, parameters, Swapped(landmarks), false, each);
     }
   });
-  refined.ExtensionSeconds = std::max(forward.ExtensionSeconds, reverse.ExtensionSeconds);
+  finished.ExtensionSeconds = std::max(forward.ExtensionSeconds, reverse.ExtensionSeconds);
   const bool meet =
     std::max(source.Positions.rows(), target.Positions.rows()) <= kMeetingMaximumVertices;
-  PolishBoth(source, target, refined.Kept, reverseSamples, landmarks, threads, meet, forward,
-    reverse);
-  refined.PolishError = forward.PolishError;
-  refined.Dense = forward.PolishError.empty() && reverse.PolishError.empty()
+  PolishBoth(source, target, finished.Samples, reverseSamples, landmarks, threads, meet,
+    forward, reverse);
+  finished.PolishError = forward.PolishError;
+  finished.Dense = forward.PolishError.empty() && reverse.PolishError.empty()
     ? TowardsInverse(source, target, forward.Dense, reverse.Dense, landmarks, threads)
     : std::move(forward.Dense);
+}
+
+// Candidate `c`'s screened map finished (FinishSampleMap, FinishDenseMap).
+FinishedMap FinishCandidate(const SpectralSurface& source, const SpectralSurface& target,
+  const RegisteredSpheres& spheres, const Candidates& candidates,
+  const std::vector<SampleMap>& screened, bool oriented, int c,
+  const CorrespondenceRefinementOptions& options)
+{
+  Stopwatch stopwatch;
+  FinishedMap finished;
+  finished.WrongOrientation = !oriented;
+  ZoomOutParameters parameters = options.ZoomOut;
+  finished.Samples = FinishSampleMap(source, target, screened[c], finished.WrongOrientation,
+    candidates.Preserve[c], candidates.Anchors[c], options, parameters);
+  finished.SampleSeconds = stopwatch.Lap();
+  FinishDenseMap(source, target, spheres.Landmarks, parameters, options, finished);
+  if (options.GeometricPolish)
+  {
+    finished.PolishSeconds = stopwatch.Lap() - finished.ExtensionSeconds;
+  }
+  return finished;
+}
+
+// The mean edge stretch of a dense map (MeanEdgeStretch of the source and its mapped points).
+double DenseMapStretch(
+  const SpectralSurface& source, const SpectralSurface& target, const DenseMap& dense)
+{
+  Points mapped(source.Positions.rows(), 3);
+  for (Index i = 0; i < mapped.rows(); ++i)
+  {
+    const size_t v = static_cast<size_t>(i);
+    mapped.row(i).setZero();
+    for (int k = 0; k < 3; ++k)
+    {
+      mapped.row(i) +=
+        dense.Barycentric[v][k] * target.Positions.row(target.Faces(dense.Triangle[v], k));
+    }
+  }
+  return MeanEdgeStretch(source.Positions, source.Faces, mapped);
+}
+
+// Per candidate, whether it keeps the landmarks: its start brings them near their targets
+// (NearLandmarks) and its screened map keeps the distances to them about as well as the
+// best such map of the expected orientation does (LandmarkConsistency.h). Records each
+// screened map's LandmarkDistanceDifference. All true without landmarks.
+std::vector<bool> KeepingLandmarks(const SpectralSurface& source, const SpectralSurface& target,
+  const RegisteredSpheres& spheres, const Candidates& candidates,
+  const std::vector<bool>& oriented, RefinedCorrespondence& refined)
+{
+  refined.LandmarkDistanceDifferences =
+    LandmarkDistanceDifferences(source, target, refined.Screened, spheres.Landmarks);
+  std::vector<bool> eligible;
+  for (size_t c = 0; c < refined.Screened.size(); ++c)
+  {
+    eligible.push_back(oriented[c] && candidates.NearLandmarks[c]);
+  }
+  if (std::find(eligible.begin(), eligible.end(), true) == eligible.end())
+  {
+    eligible = candidates.NearLandmarks;
+  }
+  const std::vector<bool> keeps =
+    KeepsLandmarkDistances(refined.LandmarkDistanceDifferences, eligible);
+  std::vector<bool> keeping;
+  for (size_t c = 0; c < refined.Screened.size(); ++c)
+  {
+    keeping.push_back(candidates.NearLandmarks[c] && keeps[c]);
+  }
+  return keeping;
+}
+
+// Whether the runner-up's map is finished too and the two compared with their stretch: the
+// refinement chooses, the polish is on (an unpolished map's stretch does not tell them
+// apart), and the runner-up came within kFinishRunnerUpMargin.
+bool FinishRunnerUp(const CandidateChoice& choice, const CorrespondenceRefinementOptions& options)
+{
+  return options.Candidate < 0 && options.GeometricPolish && choice.RunnerUp >= 0 &&
+    choice.Margin < kFinishRunnerUpMargin;
 }
 }
 
@@ -380,38 +473,62 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
     refined.Stopped = true;
     return refined;
   }
-  // The one of the expected orientation (near the landmarks) that keeps the curvature best
-  // goes on.
-  std::vector<bool> oriented, rightSide;
+  // The one of the expected orientation that keeps the landmarks (its start near them, its
+  // map keeping the distances to them) and the curvature best goes on.
+  std::vector<bool> oriented;
   for (size_t c = 0; c < refined.Screened.size(); ++c)
   {
     oriented.push_back(HasOrientation(refined.Screened[c], candidates.Preserve[c]));
-    rightSide.push_back(oriented.back() && candidates.NearLandmarks[c]);
+  }
+  const std::vector<bool> withLandmarks =
+    KeepingLandmarks(source, target, spheres, candidates, oriented, refined);
+  std::vector<bool> rightSide;
+  for (size_t c = 0; c < refined.Screened.size(); ++c)
+  {
+    rightSide.push_back(oriented[c] && withLandmarks[c]);
   }
   if (std::find(rightSide.begin(), rightSide.end(), true) == rightSide.end())
   {
-    rightSide = candidates.NearLandmarks; // none of both: near the landmarks, repaired below
+    rightSide = withLandmarks; // none of both: keeping the landmarks, repaired below
   }
   refined.Choice = ChooseCandidate(refined.Screened, rightSide, target, options.Criterion);
   if (options.Candidate >= 0)
   {
     refined.Choice.Kept = options.Candidate;
   }
-  const int kept = refined.Choice.Kept;
-  refined.WrongOrientation = !oriented[kept];
-  ZoomOutParameters parameters = options.ZoomOut;
-  refined.Kept = FinishKeptMap(source, target, refined, candidates.Preserve[kept],
-    candidates.Anchors[kept], options, parameters);
-  refined.CandidateSeconds = stopwatch.Lap();
+  double candidateSeconds = stopwatch.Lap();
   if (options.Progress)
   {
-    options.Progress(0.85); // the extension is not stopped
+    options.Progress(0.85); // the finishing is not stopped
   }
-  FinishDenseMap(source, target, spheres.Landmarks, parameters, options, refined);
-  if (options.GeometricPolish)
+  FinishedMap kept = FinishCandidate(source, target, spheres, candidates, refined.Screened,
+    oriented[refined.Choice.Kept], refined.Choice.Kept, options);
+  refined.Choice.Stretch.assign(refined.Screened.size(), std::numeric_limits<double>::quiet_NaN());
+  refined.Choice.Stretch[refined.Choice.Kept] = DenseMapStretch(source, target, kept.Dense);
+  if (FinishRunnerUp(refined.Choice, options) && kept.PolishError.empty())
   {
-    refined.PolishSeconds = stopwatch.Lap() - refined.ExtensionSeconds;
+    FinishedMap other = FinishCandidate(source, target, spheres, candidates, refined.Screened,
+      oriented[refined.Choice.RunnerUp], refined.Choice.RunnerUp, options);
+    if (other.PolishError.empty())
+    {
+      const int before = refined.Choice.Kept;
+      ChooseByFinishedMaps(refined.Choice, refined.Screened.size(),
+        refined.Choice.Stretch[refined.Choice.Kept], DenseMapStretch(source, target, other.Dense));
+      if (refined.Choice.Kept != before)
+      {
+        std::swap(kept, other);
+      }
+    }
+    // The map not kept was part of the choice.
+    candidateSeconds += other.SampleSeconds + other.ExtensionSeconds + other.PolishSeconds;
   }
+  refined.Kept = std::move(kept.Samples);
+  refined.WrongOrientation = kept.WrongOrientation;
+  refined.Dense = std::move(kept.Dense);
+  refined.PolishError = kept.PolishError;
+  refined.CandidateSeconds = candidateSeconds + kept.SampleSeconds;
+  refined.ExtensionSeconds = kept.ExtensionSeconds;
+  refined.PolishSeconds = kept.PolishSeconds;
   return refined;
 }
 }

@@ -1,11 +1,13 @@
 // The refinement of the Möbius registration's correspondence, from the two surfaces'
 // spectral data to a point on the target for every source vertex: every candidate rotation
 // of the registration screened by ZoomOut on the samples, each held on its side of the
-// sphere; the one to keep chosen (CandidateChoice); its orientation repaired when no
-// candidate reached the expected one; its basis grown to the full size; the map extended to
-// every vertex and, on request, polished on the surfaces (SurfacePolish), on further request
-// in both directions, each point then averaged with the inverse of the other direction's map
-// (InverseAveraging).
+// sphere; the one to keep chosen (CandidateChoice; with landmarks among the maps that keep
+// the distances to them, LandmarkConsistency); its orientation repaired when no candidate
+// reached the expected one; its basis grown to the full size; the map extended to every
+// vertex and, on request, polished on the surfaces (SurfacePolish), on further request in
+// both directions, each point then averaged with the inverse of the other direction's map
+// (InverseAveraging). When the runner-up came close, its map is finished too and the two
+// finished maps are compared by their score times their stretch (ChooseByFinishedMaps).
 #ifndef mobius_RefineCorrespondence_h
 #define mobius_RefineCorrespondence_h
 
@@ -36,7 +38,8 @@ struct RegisteredSpheres
   /// Landmarks: (source vertex, target vertex), each source vertex one of the source's
   /// samples (AddPinnedSamples). Every candidate maps them onto their target vertices, the
   /// candidates whose starts bring them much farther apart on the sphere than the best one
-  /// (kLandmarkAngleMargin) are not kept, and the polish holds them.
+  /// (kLandmarkAngleMargin) or whose maps keep the distances to them much worse than the
+  /// best one (kLandmarkDistanceMargin) are not kept, and the polish holds them.
   std::vector<std::pair<Index, Index>> Landmarks = {};
 };
 
@@ -63,7 +66,7 @@ struct CorrespondenceRefinementOptions
   /// each point averaged with its inverse (InverseAveraging).
   bool BothDirections;
   /// Called with the share of the refinement done (0.7 after the screening, 0.85 before the
-  /// extension); false after the screening stops the refinement.
+  /// kept map is finished); false after the screening stops the refinement.
   std::function<bool(double)> Progress;
 };
 
@@ -71,7 +74,11 @@ struct RefinedCorrespondence
 {
   /// Per candidate, its map after the screening.
   std::vector<SampleMap> Screened;
-  /// The candidate kept (the requested one, if any), its runner-up and margin.
+  /// Per candidate, how far its screened map moves the samples' distances to the landmarks
+  /// (LandmarkDistanceDifference; all 0 without landmarks).
+  std::vector<double> LandmarkDistanceDifferences;
+  /// The candidate kept (the requested one, if any), its runner-up and margin, and the
+  /// finished maps' stretch.
   CandidateChoice Choice;
   /// The kept candidate's map after the orientation repair and the basis growth.
   SampleMap Kept;
@@ -85,7 +92,8 @@ struct RefinedCorrespondence
   std::string PolishError;
   /// Wall time of the stages; with BothDirections the polish's includes the other
   /// direction's extension and polish beyond the forward extension's (they run at the same
-  /// time) and the averaging.
+  /// time) and the averaging. The candidates' includes the runner-up's map when it was
+  /// finished too and not kept (or the first kept's, when the runner-up won).
   double CandidateSeconds = 0, ExtensionSeconds = 0, PolishSeconds = 0;
   /// Progress asked to stop: nothing after the screening is filled.
   bool Stopped = false;

@@ -116,6 +116,13 @@ struct RegistrationParameters
   double SmoothingTime = ScaleFactorSignalParameters().SmoothingTime;
   int TransformMode = static_cast<int>(SO3CorrelationOptions().Reflections); ///< 0 rotations, 1 reflections, 2 both
   int NumberOfCandidates = SO3CorrelationOptions().NumberOfCandidates;
+  /// Correlation peaks closer than this (degrees) are not both kept as candidates. A body's
+  /// ambiguities (the half turns that put the front on the back or the arms on the legs) are
+  /// far apart, while a correlation peak has neighbours 10-45 degrees away that refine to the
+  /// same map: at the search's own 10 degrees, two peaks of each of the two best ambiguities
+  /// filled the four candidates, and on 7 of 26 non-isometric human pairs the right one was
+  /// not among them (docs/accuracy.md, "Non-isometric pairs").
+  double CandidateSeparation = 60.0;
   // Correspondence (vtkDenseCorrespondence, vtkCorrespondenceRefinement)
   int OutputGeometry = 0; ///< 0 target surface, 1 source surface
   bool Refine = true;     ///< spectral refinement of the Möbius map (false: the paper's map)
