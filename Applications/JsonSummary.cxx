@@ -65,7 +65,7 @@ std::string Confidence(vtkPolyData* refined)
   const std::string choice = FieldString(refined, "RefinementChoice");
   const bool runnerUp = confidence->GetComponent(0, 1) >= 0;
   std::ostringstream out;
-  out << "{\"decided_by\": " << (choice.empty() ? std::string("null") : Quoted(choice))
+  out << "{\"decided_by\": " << (choice.empty() ? std::string("null") : JsonString(choice))
       << ", \"curvature_difference\": " << Measured(curvature->GetComponent(kept, 0))
       << ", \"map_stretch\": " << Measured(stretch->GetComponent(kept, 0))
       << ", \"runner_up\": " << (runnerUp ? Number(confidence->GetComponent(0, 1)) : "null")
