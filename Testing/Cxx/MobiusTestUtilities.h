@@ -48,15 +48,28 @@ public:
         self->Warnings += message + "\n";
       }
     });
-    observed->AddObserver(vtkCommand::ErrorEvent, this->Callback);
-    observed->AddObserver(vtkCommand::WarningEvent, this->Callback);
+    this->Tags[0] = observed->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    this->Tags[1] = observed->AddObserver(vtkCommand::WarningEvent, this->Callback);
+    this->Observed = observed;
   }
+  // The observed object usually outlives the catcher: its callback must go with it, or a later
+  // message is written into a catcher that no longer exists.
+  ~MessageCatcher()
+  {
+    this->Observed->RemoveObserver(this->Tags[0]);
+    this->Observed->RemoveObserver(this->Tags[1]);
+  }
+  MessageCatcher(const MessageCatcher&) = delete;
+  MessageCatcher& operator=(const MessageCatcher&) = delete;
+
   std::string Error;
   std::string Warning;
   std::string Warnings;
 
 private:
   vtkNew<vtkCallbackCommand> Callback;
+  vtkSmartPointer<vtkObject> Observed;
+  unsigned long Tags[2] = { 0, 0 };
 };
 
 /// A spherical map of the surface embed(S^2): an icosphere with `SurfaceArea` the area of
