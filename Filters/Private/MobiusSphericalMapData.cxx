@@ -1,5 +1,6 @@
 #include "MobiusSphericalMapData.h"
 
+#include "LandmarkAlignment.h"
 #include "MapDistortion.h"
 
 #include <Eigen/Geometry> // cross
@@ -440,21 +441,10 @@ void AddDistortionArrays(vtkPolyData* map, const char* active)
 std::string CheckLandmarkPoints(const std::vector<std::pair<vtkIdType, vtkIdType>>& landmarks,
   vtkIdType sourcePoints, vtkIdType targetPoints)
 {
-  for (size_t k = 0; k < landmarks.size(); ++k)
-  {
-    const vtkIdType points[2] = { landmarks[k].first, landmarks[k].second };
-    const vtkIdType counts[2] = { sourcePoints, targetPoints };
-    for (int side = 0; side < 2; ++side)
-    {
-      if (points[side] < 0 || points[side] >= counts[side])
-      {
-        return "landmark " + std::to_string(k) + " names point " + std::to_string(points[side]) +
-          " of the " + (side == 0 ? "Source (port 0)" : "Target (port 1)") + ", which has " +
-          std::to_string(counts[side]) + " points";
-      }
-    }
-  }
-  return {};
+  const std::vector<std::pair<Index, Index>> ids(landmarks.begin(), landmarks.end());
+  const Index counts[2] = { sourcePoints, targetPoints };
+  const std::string names[2] = { "Source (port 0)", "Target (port 1)" };
+  return CheckLandmarkIds(ids, counts, names);
 }
 }
 }

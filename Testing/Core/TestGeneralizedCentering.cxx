@@ -1,6 +1,7 @@
 // Generalized centering: the real harmonics are orthonormal; degree-2 centering zeroes the
 // moments of degree 1 and 2 without flipping triangles and spreads area more evenly than
 // Möbius centering does (the paper's Figure 5).
+#include "BumpySurface.h"
 #include "CoreTest.h"
 #include "GeneralizedCentering.h"
 #include "Icosphere.h"
@@ -15,23 +16,6 @@ using namespace mobius;
 
 namespace
 {
-Vector BumpyAreas(const Points& sphere, const Triangles& triangles)
-{
-  auto embed = [](const Eigen::Vector3d& x) {
-    const double bulge =
-      1.0 + 0.8 * std::exp(-4.0 * (x - Eigen::Vector3d(0.6, 0.6, 0.5)).squaredNorm());
-    return Eigen::Vector3d(Eigen::Vector3d(1.7 * x.x(), x.y(), 0.6 * x.z()) * bulge);
-  };
-  Vector areas(triangles.rows());
-  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::Vector3d a = embed(sphere.row(triangles(t, 0))), b = embed(sphere.row(triangles(t, 1))),
-                          c = embed(sphere.row(triangles(t, 2)));
-    areas[t] = 0.5 * (b - a).cross(c - a).norm();
-  }
-  return areas;
-}
-
 // Spread of log(area share on the surface / area share on the sphere) over the triangles.
 double LogAreaDistortionDeviation(const Points& sphere, const Triangles& triangles, const Vector& areas)
 {
@@ -86,7 +70,7 @@ void TestDegreeTwoCentering()
   Points sphere;
   Triangles triangles;
   MakeIcosphere(4, sphere, triangles);
-  const Vector areas = BumpyAreas(sphere, triangles);
+  const Vector areas = BumpySurfaceAreas(sphere, triangles);
   Points mobius = sphere;
   MobiusCenteringResult mobiusResult;
   MOBIUS_CHECK(CenterSphericalMap(mobius, triangles, areas, {}, mobiusResult));

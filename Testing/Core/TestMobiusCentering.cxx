@@ -1,4 +1,5 @@
 // Unit tests of Algorithm 1 (Möbius centering) on generated spherical maps.
+#include "BumpySurface.h"
 #include "CoreTest.h"
 #include "Icosphere.h"
 #include "MobiusCentering.h"
@@ -13,22 +14,6 @@ using namespace mobius;
 
 namespace
 {
-// Original-surface triangle areas of the sphere pushed through `embed`, a smooth map R^3->R^3:
-// the areas a conformal map of that surface would carry.
-template <typename Embedding>
-Vector SurfaceAreas(const Points& sphere, const Triangles& triangles, Embedding embed)
-{
-  Vector areas(triangles.rows());
-  for (Eigen::Index t = 0; t < triangles.rows(); ++t)
-  {
-    const Eigen::Vector3d a = embed(sphere.row(triangles(t, 0)).transpose());
-    const Eigen::Vector3d b = embed(sphere.row(triangles(t, 1)).transpose());
-    const Eigen::Vector3d c = embed(sphere.row(triangles(t, 2)).transpose());
-    areas[t] = 0.5 * (b - a).cross(c - a).norm();
-  }
-  return areas;
-}
-
 // Largest distance between R*p and q over all points, for the best rotation R (Kabsch).
 double DistanceUpToRotation(const Points& p, const Points& q)
 {
@@ -38,14 +23,6 @@ double DistanceUpToRotation(const Points& p, const Points& q)
   d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0 ? -1 : 1;
   const Eigen::Matrix3d rotation = svd.matrixV() * d * svd.matrixU().transpose();
   return ((p * rotation.transpose()) - q).rowwise().norm().maxCoeff();
-}
-
-Eigen::Vector3d Bumpy(const Eigen::Vector3d& x)
-{
-  // An asymmetric blob: stretched, with a bulge toward +x+y, so its centered map is not
-  // the identity and has no symmetry.
-  const double bulge = 1.0 + 0.8 * std::exp(-4.0 * (x - Eigen::Vector3d(0.6, 0.6, 0.5)).squaredNorm());
-  return Eigen::Vector3d(1.7 * x.x(), x.y(), 0.6 * x.z()) * bulge;
 }
 
 Eigen::Vector3d MirrorSymmetricInX(const Eigen::Vector3d& x)
@@ -61,7 +38,7 @@ void TestRecoversOriginalAfterRandomInversion()
   MakeIcosphere(4, sphere, triangles);
   // The icosphere's own areas: icosahedral symmetry makes mu exactly zero, so the
   // original map is already centered.
-  const Vector areas = SurfaceAreas(sphere, triangles, [](const Eigen::Vector3d& x) { return x; });
+  const Vector areas = EmbeddedTriangleAreas(sphere, triangles, [](const Eigen::Vector3d& x) { return x; });
   MOBIUS_CHECK(SphericalCenterOfMass(sphere, triangles, areas).norm() < 1e-14);
 
   std::mt19937 random(7);
@@ -98,7 +75,7 @@ void TestStartingInversionDoesNotMatter()
   Points sphere;
   Triangles triangles;
   MakeIcosphere(4, sphere, triangles);
-  const Vector areas = SurfaceAreas(sphere, triangles, Bumpy);
+  const Vector areas = BumpySurfaceAreas(sphere, triangles);
 
   Points first = sphere;
   ApplyInversion(Eigen::Vector3d(0.5, -0.2, 0.3), first);
@@ -121,7 +98,7 @@ void TestMirrorSymmetryIsKept()
   Points sphere;
   Triangles triangles;
   MakeIcosphere(4, sphere, triangles);
-  const Vector areas = SurfaceAreas(sphere, triangles, MirrorSymmetricInX);
+  const Vector areas = EmbeddedTriangleAreas(sphere, triangles, MirrorSymmetricInX);
 
   // Pair every vertex with its mirror image under x -> -x.
   std::vector<Eigen::Index> mirror(sphere.rows(), -1);

@@ -7,6 +7,7 @@
 // median <= 0.05 deg and max <= 0.2 deg for 20 random rotations (RotationsOnly) and for 20
 // mirrored copies (ReflectionsOnly), each plus rotations with degenerate Euler angles, and mode
 // Both must pick the right determinant.
+#include "BumpySurface.h"
 #include "CoreTest.h"
 #include "Icosphere.h"
 #include "MobiusCentering.h"
@@ -39,14 +40,6 @@ Eigen::Matrix3d RandomRotation()
   return q.normalized().toRotationMatrix();
 }
 
-// An asymmetric blob (as in TestMobiusCentering): stretched, with a bulge toward +x+y.
-Eigen::Vector3d Bumpy(const Eigen::Vector3d& x)
-{
-  const double bulge =
-    1.0 + 0.8 * std::exp(-4.0 * (x - Eigen::Vector3d(0.6, 0.6, 0.5)).squaredNorm());
-  return Eigen::Vector3d(1.7 * x.x(), x.y(), 0.6 * x.z()) * bulge;
-}
-
 struct SphericalMap
 {
   Points Sphere;
@@ -54,20 +47,13 @@ struct SphericalMap
   Vector Areas;
 };
 
-// The icosphere as the conformal map of the bumpy surface (areas pushed through Bumpy),
+// The icosphere as the conformal map of the bumpy surface (BumpySurface.h),
 // centered by Algorithm 1.
 SphericalMap MakeCenteredMap()
 {
   SphericalMap map;
   MakeIcosphere(5, map.Sphere, map.Faces);
-  map.Areas.resize(map.Faces.rows());
-  for (Eigen::Index t = 0; t < map.Faces.rows(); ++t)
-  {
-    const Eigen::Vector3d a = Bumpy(map.Sphere.row(map.Faces(t, 0)).transpose());
-    const Eigen::Vector3d b = Bumpy(map.Sphere.row(map.Faces(t, 1)).transpose());
-    const Eigen::Vector3d c = Bumpy(map.Sphere.row(map.Faces(t, 2)).transpose());
-    map.Areas[t] = 0.5 * (b - a).cross(c - a).norm();
-  }
+  map.Areas = BumpySurfaceAreas(map.Sphere, map.Faces);
   MobiusCenteringResult centering;
   MOBIUS_CHECK(CenterSphericalMap(map.Sphere, map.Faces, map.Areas, {}, centering));
   MOBIUS_CHECK(centering.Converged);

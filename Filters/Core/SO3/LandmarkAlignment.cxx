@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <numeric>
+#include <string>
 
 namespace mobius
 {
@@ -162,5 +163,23 @@ bool MoveByLandmarkMobius(
     points.row(i) = ToSphere(image).transpose();
   }
   return true;
+}
+
+std::string CheckLandmarkIds(const std::vector<std::pair<Index, Index>>& landmarks,
+  const Index counts[2], const std::string names[2])
+{
+  for (size_t k = 0; k < landmarks.size(); ++k)
+  {
+    const Index points[2] = { landmarks[k].first, landmarks[k].second };
+    for (int side = 0; side < 2; ++side)
+    {
+      if (points[side] < 0 || points[side] >= counts[side])
+      {
+        return "landmark " + std::to_string(k) + " names point " + std::to_string(points[side]) +
+          " of the " + names[side] + ", which has " + std::to_string(counts[side]) + " points";
+      }
+    }
+  }
+  return {};
 }
 }

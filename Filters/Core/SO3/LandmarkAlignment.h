@@ -13,6 +13,8 @@
 #include <Eigen/Core>
 
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace mobius
@@ -23,6 +25,12 @@ struct SphereLandmarks
   Points Source;
   Points Target;
 };
+
+/// The first landmark (source and target point ids) naming a point outside its map's
+/// `counts` points, e.g. "landmark 2 names point 5000 of the Target (port 1), which has 4000
+/// points" (`names`: what messages call the two maps); empty if every one names a point.
+std::string CheckLandmarkIds(const std::vector<std::pair<Index, Index>>& landmarks,
+  const Index counts[2], const std::string names[2]);
 
 /// Root mean square of the angles (radians) between T p_k and q_k: 0 when the transform
 /// brings every landmark onto its target.
