@@ -3,10 +3,10 @@
 // transform is the turn, the source's points land on the copy's: 0.0019 and 0.0014 at
 // Resolution 32 under glibc's default and its SSE2 dispatch alike, bound 0.02); 3 exact
 // landmarks order the candidates (the kept one's angle about 0) and fit a Möbius
-// transformation that sends them onto their targets; each message comes out as the filter prints it: a bad or coarse
-// Resolution, a map that could not be read, a landmark naming no point, too few or
-// coinciding landmarks for the fit; a stop asked by the progress is no error; the memory
-// estimate and the largest grid that fits agree.
+// transformation that sends them onto their targets; each message comes out as the filter
+// prints it: a bad or coarse Resolution, a map that could not be read, a landmark naming no
+// point, too few or coinciding landmarks for the fit; a stop asked by the progress is no
+// error; the memory estimate and the largest grid that fits agree.
 #include "BumpySurface.h"
 #include "CoreTest.h"
 #include "Icosphere.h"

@@ -60,11 +60,101 @@ bool IsBetter(const GridPeak& x, const GridPeak& y)
     x.Euler.data(), x.Euler.data() + 3, y.Euler.data(), y.Euler.data() + 3);
 }
 
-// Scans slices j = first .. last - 1 for local maxima over the 26 neighbours (α and γ wrap
-// around; below β = 0 and above β = π the grid continues as C(α, -β, γ) = C(α+π, β, γ+π)).
-// At β = 0 and π only γ = 0 is scanned: there C depends on α ± γ alone (and the duplicate
-// neighbours within the pole slice are skipped).
-// `next` is called after each slice; false from it ends the scan early.
+// Slice j of the grid into `slice`. Below β = 0 and above β = π the grid continues as
+// C(α, -β, γ) = C(α+π, β, γ+π): such a slice is the mirrored slice (in `mirror`) shifted by
+// half a turn in α and γ.
+void LoadSlice(const SO3CorrelationTensor& tensor, SO3CorrelationTensor::SliceWorkspace& workspace,
+  int j, std::vector<double>& mirror, double* slice)
+{
+  const int B = tensor.GetBandwidth();
+  const int M = tensor.GetGridResolution();
+  if (j >= 0 && j <= B)
+  {
+    tensor.SynthesizeSlice(j, workspace, slice);
+    return;
+  }
+  tensor.SynthesizeSlice(j < 0 ? -j : 2 * B - j, workspace, mirror.data());
+  for (int c = 0; c < M; ++c)
+  {
+    for (int a = 0; a < M; ++a)
+    {
+      slice[static_cast<std::size_t>(c) * M + a] =
+        mirror[static_cast<std::size_t>((c + M / 2) % M) * M + (a + M / 2) % M];
+    }
+  }
+}
+
+// Whether the value at row c, column a of `here` is at least each of its 26 neighbours in
+// the slices below, here and above (α and γ wrap around; M samples per row).
+bool IsLocalMaximum(const double* below, const double* here, const double* above, int c, int a,
+  int M, bool poleSlice)
+{
+  const double v = here[static_cast<std::size_t>(c) * M + a];
+  const int cm = (c + M - 1) % M, cp = (c + 1) % M;
+  const int am = (a + M - 1) % M, ap = (a + 1) % M;
+  for (const double* slice : { here, below, above })
+  {
+    for (int cc : { cm, c, cp })
+    {
+      if (poleSlice && slice == here && cc != c)
+      {
+        // On a pole slice the rows c ± 1 repeat row c shifted by one sample (C depends
+        // on α ± γ only), so one neighbour there equals v up to round-off, which must
+        // not decide whether v is a maximum. Row c's own a ± 1 cover them.
+        continue;
+      }
+      const double* row = slice + static_cast<std::size_t>(cc) * M;
+      if (row[am] > v || row[a] > v || row[ap] > v)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Adds `peak` to the heap of the best `keep` peaks (the worst of them at the front).
+void KeepIfBest(const GridPeak& peak, int keep, std::vector<GridPeak>& heap)
+{
+  if (static_cast<int>(heap.size()) < keep)
+  {
+    heap.push_back(peak);
+    std::push_heap(heap.begin(), heap.end(), IsBetter);
+  }
+  else if (IsBetter(peak, heap.front()))
+  {
+    std::pop_heap(heap.begin(), heap.end(), IsBetter);
+    heap.back() = peak;
+    std::push_heap(heap.begin(), heap.end(), IsBetter);
+  }
+}
+
+// The local maxima of slice j (window: slices j - 1, j, j + 1) into the heap of the best
+// `keep`. At β = 0 and π only γ = 0 is scanned: there C depends on α ± γ alone.
+void ScanSlice(int j, int B, int M, const double* const window[3], int keep,
+  std::vector<GridPeak>& heap)
+{
+  const bool poleSlice = j == 0 || j == B;
+  const int cCount = poleSlice ? 1 : M;
+  for (int c = 0; c < cCount; ++c)
+  {
+    for (int a = 0; a < M; ++a)
+    {
+      const double v = window[1][static_cast<std::size_t>(c) * M + a];
+      if ((static_cast<int>(heap.size()) == keep && v < heap.front().Value) ||
+        !IsLocalMaximum(window[0], window[1], window[2], c, a, M, poleSlice))
+      {
+        continue;
+      }
+      KeepIfBest(
+        { v, Eigen::Vector3d(2.0 * M_PI * a / M, M_PI * j / B, 2.0 * M_PI * c / M) }, keep, heap);
+    }
+  }
+}
+
+// Scans slices j = first .. last - 1 for local maxima over the 26 neighbours, keeping the
+// best `keep` in `peaks`. `next` is called after each slice; false from it ends the scan
+// early.
 void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int keep,
   std::vector<GridPeak>& peaks, const std::function<bool()>& next)
 {
@@ -74,88 +164,13 @@ void ScanSlices(const SO3CorrelationTensor& tensor, int first, int last, int kee
   std::unique_ptr<SO3CorrelationTensor::SliceWorkspace> workspace = tensor.NewSliceWorkspace();
   std::vector<double> storage(3 * area), mirror(area);
   double* window[3] = { storage.data(), storage.data() + area, storage.data() + 2 * area };
-  auto load = [&](int j, double* slice) {
-    if (j >= 0 && j <= B)
-    {
-      tensor.SynthesizeSlice(j, *workspace, slice);
-      return;
-    }
-    tensor.SynthesizeSlice(j < 0 ? -j : 2 * B - j, *workspace, mirror.data());
-    for (int c = 0; c < M; ++c)
-    {
-      for (int a = 0; a < M; ++a)
-      {
-        slice[static_cast<std::size_t>(c) * M + a] =
-          mirror[static_cast<std::size_t>((c + M / 2) % M) * M + (a + M / 2) % M];
-      }
-    }
-  };
-  load(first - 1, window[0]);
-  load(first, window[1]);
-  // Heap of the best `keep` local maxima, the worst of them at the front.
+  LoadSlice(tensor, *workspace, first - 1, mirror, window[0]);
+  LoadSlice(tensor, *workspace, first, mirror, window[1]);
   std::vector<GridPeak> heap;
   for (int j = first; j < last; ++j)
   {
-    load(j + 1, window[2]);
-    const double* below = window[0];
-    const double* here = window[1];
-    const double* above = window[2];
-    const int cCount = (j == 0 || j == B) ? 1 : M;
-    for (int c = 0; c < cCount; ++c)
-    {
-      const int cm = (c + M - 1) % M;
-      const int cp = (c + 1) % M;
-      for (int a = 0; a < M; ++a)
-      {
-        const double v = here[static_cast<std::size_t>(c) * M + a];
-        if (static_cast<int>(heap.size()) == keep && v < heap.front().Value)
-        {
-          continue;
-        }
-        const int am = (a + M - 1) % M;
-        const int ap = (a + 1) % M;
-        bool isMaximum = true;
-        for (const double* slice : { here, below, above })
-        {
-          for (int cc : { cm, c, cp })
-          {
-            if (cCount == 1 && slice == here && cc != c)
-            {
-              // On a pole slice the rows c ± 1 repeat row c shifted by one sample (C depends
-              // on α ± γ only), so one neighbour there equals v up to round-off, which must
-              // not decide whether v is a maximum. Row c's own a ± 1 cover them.
-              continue;
-            }
-            const double* row = slice + static_cast<std::size_t>(cc) * M;
-            if (row[am] > v || row[a] > v || row[ap] > v)
-            {
-              isMaximum = false;
-              break;
-            }
-          }
-          if (!isMaximum)
-          {
-            break;
-          }
-        }
-        if (!isMaximum)
-        {
-          continue;
-        }
-        GridPeak peak{ v, Eigen::Vector3d(2.0 * M_PI * a / M, M_PI * j / B, 2.0 * M_PI * c / M) };
-        if (static_cast<int>(heap.size()) < keep)
-        {
-          heap.push_back(peak);
-          std::push_heap(heap.begin(), heap.end(), IsBetter);
-        }
-        else if (IsBetter(peak, heap.front()))
-        {
-          std::pop_heap(heap.begin(), heap.end(), IsBetter);
-          heap.back() = peak;
-          std::push_heap(heap.begin(), heap.end(), IsBetter);
-        }
-      }
-    }
+    LoadSlice(tensor, *workspace, j + 1, mirror, window[2]);
+    ScanSlice(j, B, M, window, keep, heap);
     std::rotate(window, window + 1, window + 3);
     if (!next())
     {
@@ -308,24 +323,13 @@ std::vector<Peak> SelectSeparated(const std::vector<Peak>& peaks, double separat
   return kept;
 }
 
-// Stage 1 for one determinant class: grid search at the coarse bandwidth, Newton on the
-// coarse tensor, and up to `wanted` well-separated peaks, best first.
-// `progress` (fraction of this search) runs on the calling thread; false from it stops the
-// search (`aborted`, no peaks).
-std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
-  const SphericalHarmonicCoefficients& target, int bandwidth, bool reflect,
-  const SO3CorrelationOptions& options, int threads, int wanted,
+// The best `keep` local maxima of the tensor's grid (sampled in β), best first, the same
+// for any thread count. `progress` (0.2 to 0.9 of the search) runs on the calling thread;
+// false from it stops the scan (`aborted`, no peaks).
+std::vector<GridPeak> ScanGrid(const SO3CorrelationTensor& tensor, int keep, int threads,
   const std::function<bool(double)>& progress, bool& aborted)
 {
-  SO3CorrelationTensor tensor(source, target, bandwidth, reflect, threads);
-  tensor.TransformToBetaSamples();
-  if (!progress(0.2))
-  {
-    aborted = true;
-    return {};
-  }
-  const int keep = 8 * wanted + 8;
-  const int slices = bandwidth + 1;
+  const int slices = tensor.GetBandwidth() + 1;
   const int chunks = std::min(slices, threads);
   std::vector<std::vector<GridPeak>> found(chunks);
   // Progress is reported (and an abort heard) after each slice by the calling thread, the
@@ -360,101 +364,131 @@ std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
   {
     gridPeaks.resize(keep); // the best `keep` of all slices, whatever the split
   }
+  return gridPeaks;
+}
+
+// Whether `peak` is at least `separation` from each of `others` (all of one determinant).
+bool SeparatedFromAll(const Peak& peak, const std::vector<Peak>& others, double separation)
+{
+  const Eigen::Matrix3d transform = PeakTransform(peak);
+  for (const Peak& other : others)
+  {
+    if (RotationAngleBetween(PeakTransform(other), transform) < separation)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The next grid peaks (from `next` on) to refine together, up to one per thread: those
+// separated from the accepted peaks are taken as long as each is separated from the batch's
+// earlier members (otherwise the batch ends there).
+std::vector<Peak> NextBatch(const std::vector<GridPeak>& gridPeaks, bool reflect,
+  const std::vector<Peak>& accepted, double separation, int threads, std::size_t& next)
+{
+  std::vector<Peak> batch;
+  while (next < gridPeaks.size() && static_cast<int>(batch.size()) < threads)
+  {
+    const Peak candidate{ gridPeaks[next].Euler, gridPeaks[next].Value, reflect };
+    if (!SeparatedFromAll(candidate, accepted, separation))
+    {
+      ++next;
+      continue;
+    }
+    if (!SeparatedFromAll(candidate, batch, separation))
+    {
+      break;
+    }
+    batch.push_back(candidate);
+    ++next;
+  }
+  return batch;
+}
+
+// Refines the batch's peaks on the coarse tensor (when asked) and accepts them peak by peak,
+// up to `wanted`: one is skipped if it, or its refinement, comes near an accepted peak.
+void RefineAndAccept(std::vector<Peak> batch, const SO3CorrelationTensor& tensor, bool refine,
+  double separation, int threads, int wanted, std::vector<Peak>& accepted)
+{
+  const std::vector<Peak> unrefined = batch;
+  if (refine)
+  {
+    ParallelFor(static_cast<int>(batch.size()), threads,
+      [&](int i, int) { batch[i].Score = RefinePeak(tensor, batch[i].Euler); });
+  }
+  for (std::size_t i = 0; i < batch.size(); ++i)
+  {
+    if (static_cast<int>(accepted.size()) < wanted &&
+      SeparatedFromAll(unrefined[i], accepted, separation) &&
+      SeparatedFromAll(batch[i], accepted, separation))
+    {
+      accepted.push_back(batch[i]);
+    }
+  }
+}
+
+// Stage 1 for one determinant class: grid search at the coarse bandwidth, Newton on the
+// coarse tensor, and up to `wanted` well-separated peaks, best first.
+// `progress` (fraction of this search) runs on the calling thread; false from it stops the
+// search (`aborted`, no peaks).
+std::vector<Peak> SearchGrid(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, int bandwidth, bool reflect,
+  const SO3CorrelationOptions& options, int threads, int wanted,
+  const std::function<bool(double)>& progress, bool& aborted)
+{
+  SO3CorrelationTensor tensor(source, target, bandwidth, reflect, threads);
+  tensor.TransformToBetaSamples();
+  if (!progress(0.2))
+  {
+    aborted = true;
+    return {};
+  }
+  const std::vector<GridPeak> gridPeaks =
+    ScanGrid(tensor, 8 * wanted + 8, threads, progress, aborted);
+  if (gridPeaks.empty())
+  {
+    return {};
+  }
   if (options.RefinePeaks)
   {
     tensor.TransformToFourier();
   }
-  const double separation = options.MinimumCandidateSeparation;
-  std::vector<Peak> accepted;
-  auto separatedFromAccepted = [&](const Peak& peak) {
-    const Eigen::Matrix3d transform = PeakTransform(peak);
-    for (const Peak& other : accepted)
-    {
-      if (RotationAngleBetween(PeakTransform(other), transform) < separation)
-      {
-        return false;
-      }
-    }
-    return true;
-  };
   // Grid peaks are taken in order: one not separated from an accepted (refined) peak is
   // skipped, otherwise it is refined and accepted unless it climbed near an accepted peak.
-  // For parallelism a batch of upcoming peaks, up to one per thread, is refined ahead, as long
-  // as each is separated from the batch's earlier members (otherwise the batch ends there);
-  // the batch is then accepted peak by peak with exactly the rule above, so a refinement made
-  // ahead for a peak that the rule skips is dropped, and the result is the one-thread result.
+  // For parallelism a batch of upcoming peaks is refined ahead (NextBatch); the batch is then
+  // accepted peak by peak with exactly the rule above, so a refinement made ahead for a peak
+  // that the rule skips is dropped, and the result is the one-thread result.
+  std::vector<Peak> accepted;
   std::size_t next = 0;
   while (next < gridPeaks.size() && static_cast<int>(accepted.size()) < wanted)
   {
-    std::vector<Peak> batchPeaks, unrefined;
-    while (next < gridPeaks.size() && static_cast<int>(batchPeaks.size()) < threads)
-    {
-      const Peak candidate{ gridPeaks[next].Euler, gridPeaks[next].Value, reflect };
-      if (!separatedFromAccepted(candidate))
-      {
-        ++next;
-        continue;
-      }
-      const Eigen::Matrix3d transform = PeakTransform(candidate);
-      bool separatedFromBatch = true;
-      for (const Peak& member : batchPeaks)
-      {
-        if (RotationAngleBetween(PeakTransform(member), transform) < separation)
-        {
-          separatedFromBatch = false;
-          break;
-        }
-      }
-      if (!separatedFromBatch)
-      {
-        break;
-      }
-      batchPeaks.push_back(candidate);
-      ++next;
-    }
-    unrefined = batchPeaks;
-    if (options.RefinePeaks)
-    {
-      ParallelFor(static_cast<int>(batchPeaks.size()), threads,
-        [&](int i, int) { batchPeaks[i].Score = RefinePeak(tensor, batchPeaks[i].Euler); });
-    }
-    for (std::size_t i = 0; i < batchPeaks.size(); ++i)
-    {
-      if (static_cast<int>(accepted.size()) < wanted && separatedFromAccepted(unrefined[i]) &&
-        separatedFromAccepted(batchPeaks[i]))
-      {
-        accepted.push_back(batchPeaks[i]);
-      }
-    }
+    RefineAndAccept(NextBatch(gridPeaks, reflect, accepted, options.MinimumCandidateSeparation,
+                      threads, next),
+      tensor, options.RefinePeaks, options.MinimumCandidateSeparation, threads, wanted, accepted);
   }
   return accepted;
 }
 
-// Stage 2: Newton's method on the correlation over bands l < bandwidth for all peaks at once
-// (one EvaluateCorrelationSamples pass per iteration). A trial point that lowers C is
-// replaced by half the step; a peak is done when its Newton step is below 1e-6 rad (the step is
-// then applied without another pass: the position error left is of order |step|^2 times the
-// bandwidth, and the score is the quadratic model's value there).
-void PolishPeaks(const SphericalHarmonicCoefficients& source,
-  const SphericalHarmonicCoefficients& target, int bandwidth, double maximumStep,
-  double separation, int threads, std::vector<Peak>& peaks)
+// A peak's Newton iteration in PolishPeaks: the last accepted point and the step tried
+// from it.
+struct PolishState
 {
-  struct State
-  {
-    Eigen::Vector3d Base;  // last accepted point
-    double BaseValue = 0;
-    bool HasBase = false;
-    Eigen::Vector3d Step = Eigen::Vector3d::Zero();
-    int Halvings = 0;
-    bool Done = false;
-  };
-  const std::size_t count = peaks.size();
-  std::vector<State> states(count);
-  const int maximumPasses = 8;
-  // Near β = 0 or π the Euler chart is singular (only α ± γ is defined, and one direction of
-  // rotation is missing to first order), and Newton's method there stalls. Such peaks are
-  // refined as T = R · Ry(π/2) instead: C(R · Q) is the correlation of the rotated source
-  // f∘Q⁻¹ at R, and R's β is near π/2.
+  Eigen::Vector3d Base; // last accepted point
+  double BaseValue = 0;
+  bool HasBase = false;
+  Eigen::Vector3d Step = Eigen::Vector3d::Zero();
+  int Halvings = 0;
+  bool Done = false;
+};
+
+// Near β = 0 or π the Euler chart is singular (only α ± γ is defined, and one direction of
+// rotation is missing to first order), and Newton's method there stalls. Such peaks move to
+// the chart T = R · Ry(π/2): C(R · Q) is the correlation of the rotated source f∘Q⁻¹ at R,
+// and R's β is near π/2. Returns that rotated source (empty if no peak moved).
+SphericalHarmonicCoefficients MoveOffSingularChart(const SphericalHarmonicCoefficients& source,
+  int bandwidth, int threads, std::vector<Peak>& peaks)
+{
   SphericalHarmonicCoefficients quarterTurnSource;
   for (Peak& peak : peaks)
   {
@@ -469,96 +503,131 @@ void PolishPeaks(const SphericalHarmonicCoefficients& source,
       }
     }
   }
-  for (int pass = 0; pass < maximumPasses; ++pass)
+  return quarterTurnSource;
+}
+
+// The correlation and its derivatives at the trial point of every peak still polishing, the
+// ordinary chart's peaks first, then the quarter-turned ones; `owner[s]` is sample s's peak.
+std::vector<SO3CorrelationSample> EvaluateTrialPoints(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& quarterTurnSource,
+  const SphericalHarmonicCoefficients& target, int bandwidth, int threads,
+  const std::vector<Peak>& peaks, const std::vector<PolishState>& states,
+  std::vector<std::size_t>& owner)
+{
+  std::vector<SO3CorrelationSample> samples;
+  for (int chart = 0; chart < 2; ++chart)
   {
-    std::vector<SO3CorrelationSample> samples;
-    std::vector<std::size_t> owner;
-    for (int chart = 0; chart < 2; ++chart)
+    std::vector<SO3CorrelationSample> group;
+    for (std::size_t i = 0; i < peaks.size(); ++i)
     {
-      std::vector<SO3CorrelationSample> group;
-      for (std::size_t i = 0; i < count; ++i)
+      if (!states[i].Done && peaks[i].QuarterTurnChart == (chart == 1))
       {
-        if (!states[i].Done && peaks[i].QuarterTurnChart == (chart == 1))
-        {
-          SO3CorrelationSample sample;
-          sample.EulerAngles = states[i].HasBase
-            ? Eigen::Vector3d(states[i].Base + states[i].Step)
-            : peaks[i].Euler;
-          sample.ReflectSource = peaks[i].Reflect;
-          group.push_back(sample);
-          owner.push_back(i);
-        }
-      }
-      if (!group.empty())
-      {
-        EvaluateCorrelationSamples(
-          chart == 1 ? quarterTurnSource : source, target, group, bandwidth, threads);
-        samples.insert(samples.end(), group.begin(), group.end());
+        SO3CorrelationSample sample;
+        sample.EulerAngles = states[i].HasBase ? Eigen::Vector3d(states[i].Base + states[i].Step)
+                                               : peaks[i].Euler;
+        sample.ReflectSource = peaks[i].Reflect;
+        group.push_back(sample);
+        owner.push_back(i);
       }
     }
+    if (!group.empty())
+    {
+      EvaluateCorrelationSamples(
+        chart == 1 ? quarterTurnSource : source, target, group, bandwidth, threads);
+      samples.insert(samples.end(), group.begin(), group.end());
+    }
+  }
+  return samples;
+}
+
+// One Newton update of a peak from its evaluated trial point. A trial point that lowers C
+// halves the step; a peak is done when its Newton step is below 1e-6 rad (the step is then
+// applied without another pass: the position error left is of order |step|^2 times the
+// bandwidth, and the score is the quadratic model's value there).
+void AdvancePeak(const SO3CorrelationSample& sample, double maximumStep, PolishState& state,
+  Peak& peak)
+{
+  if (state.HasBase && sample.Value < state.BaseValue - 1e-14 * std::abs(state.BaseValue))
+  {
+    // Uphill step went too far: halve it (the base stays the answer if it never works).
+    state.Step *= 0.5;
+    state.Done = ++state.Halvings > 40;
+    return;
+  }
+  state.Base = sample.EulerAngles;
+  state.BaseValue = sample.Value;
+  state.HasBase = true;
+  state.Halvings = 0;
+  peak.Euler = state.Base;
+  peak.Score = state.BaseValue;
+  Eigen::Vector3d step = MaximizingNewtonStep(sample.Gradient, sample.Hessian);
+  if (step.norm() > maximumStep)
+  {
+    step *= maximumStep / step.norm();
+  }
+  if (step.norm() < 1e-6)
+  {
+    const double model =
+      sample.Value + sample.Gradient.dot(step) + 0.5 * step.dot(sample.Hessian * step);
+    if (model >= sample.Value)
+    {
+      peak.Euler = state.Base + step;
+      peak.Score = model;
+    }
+    state.Done = true;
+    return;
+  }
+  state.Step = step;
+}
+
+// A peak that climbed within `separation` of a better one is the same peak (or would be
+// dropped next to it): it stops polishing.
+void StopMergedPeaks(const std::vector<Peak>& peaks, double separation,
+  std::vector<PolishState>& states)
+{
+  for (std::size_t i = 0; i < peaks.size(); ++i)
+  {
+    if (states[i].Done)
+    {
+      continue;
+    }
+    const Eigen::Matrix3d transform = PeakTransform(peaks[i]);
+    for (std::size_t j = 0; j < peaks.size(); ++j)
+    {
+      if (j != i && peaks[j].Reflect == peaks[i].Reflect && peaks[j].Score > peaks[i].Score &&
+        RotationAngleBetween(PeakTransform(peaks[j]), transform) < separation)
+      {
+        states[i].Done = true;
+        break;
+      }
+    }
+  }
+}
+
+// Stage 2: Newton's method on the correlation over bands l < bandwidth for all peaks at once
+// (one EvaluateCorrelationSamples pass per iteration, AdvancePeak for each peak).
+void PolishPeaks(const SphericalHarmonicCoefficients& source,
+  const SphericalHarmonicCoefficients& target, int bandwidth, double maximumStep,
+  double separation, int threads, std::vector<Peak>& peaks)
+{
+  std::vector<PolishState> states(peaks.size());
+  const int maximumPasses = 8;
+  const SphericalHarmonicCoefficients quarterTurnSource =
+    MoveOffSingularChart(source, bandwidth, threads, peaks);
+  for (int pass = 0; pass < maximumPasses; ++pass)
+  {
+    std::vector<std::size_t> owner;
+    const std::vector<SO3CorrelationSample> samples = EvaluateTrialPoints(
+      source, quarterTurnSource, target, bandwidth, threads, peaks, states, owner);
     if (samples.empty())
     {
       break;
     }
     for (std::size_t s = 0; s < samples.size(); ++s)
     {
-      State& state = states[owner[s]];
-      Peak& peak = peaks[owner[s]];
-      const SO3CorrelationSample& sample = samples[s];
-      if (state.HasBase && sample.Value < state.BaseValue - 1e-14 * std::abs(state.BaseValue))
-      {
-        // Uphill step went too far: halve it (the base stays the answer if it never works).
-        state.Step *= 0.5;
-        if (++state.Halvings > 40)
-        {
-          state.Done = true;
-        }
-        continue;
-      }
-      state.Base = sample.EulerAngles;
-      state.BaseValue = sample.Value;
-      state.HasBase = true;
-      state.Halvings = 0;
-      peak.Euler = state.Base;
-      peak.Score = state.BaseValue;
-      Eigen::Vector3d step = MaximizingNewtonStep(sample.Gradient, sample.Hessian);
-      if (step.norm() > maximumStep)
-      {
-        step *= maximumStep / step.norm();
-      }
-      if (step.norm() < 1e-6)
-      {
-        const double model =
-          sample.Value + sample.Gradient.dot(step) + 0.5 * step.dot(sample.Hessian * step);
-        if (model >= sample.Value)
-        {
-          peak.Euler = state.Base + step;
-          peak.Score = model;
-        }
-        state.Done = true;
-        continue;
-      }
-      state.Step = step;
+      AdvancePeak(samples[s], maximumStep, states[owner[s]], peaks[owner[s]]);
     }
-    // A peak that climbed within `separation` of a better one is the same peak (or would be
-    // dropped next to it): stop refining it.
-    for (std::size_t i = 0; i < count; ++i)
-    {
-      if (states[i].Done)
-      {
-        continue;
-      }
-      const Eigen::Matrix3d transform = PeakTransform(peaks[i]);
-      for (std::size_t j = 0; j < count; ++j)
-      {
-        if (j != i && peaks[j].Reflect == peaks[i].Reflect && peaks[j].Score > peaks[i].Score &&
-          RotationAngleBetween(PeakTransform(peaks[j]), transform) < separation)
-        {
-          states[i].Done = true;
-          break;
-        }
-      }
-    }
+    StopMergedPeaks(peaks, separation, states);
   }
 }
 
