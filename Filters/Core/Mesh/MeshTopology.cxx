@@ -516,31 +516,42 @@ MeshProvenance ExtractLargestComponent(Points& points, Triangles& triangles)
   return provenance;
 }
 
-bool OrientConsistently(
-  Triangles& triangles, Index* reversedTriangles, std::vector<EdgeKey>* disagreeing)
+namespace
 {
-  if (reversedTriangles)
-  {
-    *reversedTriangles = 0;
-  }
+// A triangle across a two-triangle edge, and whether the pair currently agrees.
+struct OrientationNeighbour
+{
+  Index Triangle;
+  bool SameDirection; // both traverse the shared edge the same way: orientations disagree
+  Index Low, High;    // the shared edge
+};
+
+// Triangle adjacency across two-triangle edges. On manifold edges a triangle has at most
+// three neighbours: fixed slots, no list per triangle.
+struct OrientationAdjacency
+{
+  std::vector<std::array<OrientationNeighbour, 3>> Neighbours;
+  std::vector<unsigned char> Count;
+};
+
+// The largest point index used, plus one.
+Index UsedPointCount(const Triangles& triangles)
+{
   Index numberOfPoints = 0;
   for (Index t = 0; t < triangles.rows(); ++t)
   {
     numberOfPoints = std::max(numberOfPoints, triangles.row(t).maxCoeff() + 1);
   }
-  const std::vector<char> valid = ValidTriangles(triangles, numberOfPoints);
-  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, numberOfPoints);
+  return numberOfPoints;
+}
 
-  // Triangle adjacency across two-triangle edges, with whether the pair currently agrees. On
-  // manifold edges a triangle has at most three neighbours: fixed slots, no list per triangle.
-  struct Neighbour
-  {
-    Index Triangle;
-    bool SameDirection; // both traverse the shared edge the same way: orientations disagree
-    Index Low, High;    // the shared edge
-  };
-  std::vector<std::array<Neighbour, 3>> adjacency(static_cast<size_t>(triangles.rows()));
-  std::vector<unsigned char> neighbourCount(static_cast<size_t>(triangles.rows()), 0);
+// The adjacency of the valid triangles; false if an edge has more than two of them.
+bool BuildOrientationAdjacency(const Triangles& triangles, const std::vector<char>& valid,
+  Index numberOfPoints, OrientationAdjacency& adjacency)
+{
+  const std::vector<HalfEdge> halfEdges = SortedHalfEdges(triangles, valid, numberOfPoints);
+  adjacency.Neighbours.resize(static_cast<size_t>(triangles.rows()));
+  adjacency.Count.assign(static_cast<size_t>(triangles.rows()), 0);
   bool manifold = true;
   ForEachEdge(halfEdges, [&](size_t begin, size_t end) {
     if (end - begin > 2)
@@ -551,20 +562,25 @@ bool OrientConsistently(
     {
       const HalfEdge &x = halfEdges[begin], &y = halfEdges[begin + 1];
       const bool same = x.From == y.From;
-      adjacency[x.Triangle][neighbourCount[x.Triangle]++] = { y.Triangle, same, x.Low, x.High };
-      adjacency[y.Triangle][neighbourCount[y.Triangle]++] = { x.Triangle, same, x.Low, x.High };
+      adjacency.Neighbours[x.Triangle][adjacency.Count[x.Triangle]++] = { y.Triangle, same,
+        x.Low, x.High };
+      adjacency.Neighbours[y.Triangle][adjacency.Count[y.Triangle]++] = { x.Triangle, same,
+        x.Low, x.High };
     }
   });
-  if (!manifold)
-  {
-    return false;
-  }
-  // Breadth-first: decide for each triangle whether to reverse it; a contradiction means
-  // the surface is not orientable (a Moebius strip, a Klein bottle).
-  std::vector<EdgeKey> contradictions;
-  std::vector<signed char> reverse(static_cast<size_t>(triangles.rows()), -1);
+  return manifold;
+}
+
+// Breadth-first from each component's first triangle: whether to reverse each triangle (1)
+// or not (0; -1 for invalid ones). A contradiction means the surface is not orientable (a
+// Moebius strip, a Klein bottle): without `contradictions` that ends the search (false);
+// with it, its edge is recorded and the search goes on.
+bool ChooseReversals(const std::vector<char>& valid, const OrientationAdjacency& adjacency,
+  std::vector<signed char>& reverse, std::vector<EdgeKey>* contradictions)
+{
+  reverse.assign(valid.size(), -1);
   std::vector<Index> queue;
-  for (Index seed = 0; seed < triangles.rows(); ++seed)
+  for (Index seed = 0; seed < static_cast<Index>(valid.size()); ++seed)
   {
     if (!valid[seed] || reverse[seed] >= 0)
     {
@@ -575,9 +591,9 @@ bool OrientConsistently(
     for (size_t q = 0; q < queue.size(); ++q)
     {
       const Index t = queue[q];
-      for (int i = 0; i < neighbourCount[t]; ++i)
+      for (int i = 0; i < adjacency.Count[t]; ++i)
       {
-        const Neighbour& nb = adjacency[t][i];
+        const OrientationNeighbour& nb = adjacency.Neighbours[t][i];
         const signed char wanted =
           static_cast<signed char>(nb.SameDirection ? 1 - reverse[t] : reverse[t]);
         if (reverse[nb.Triangle] < 0)
@@ -587,21 +603,21 @@ bool OrientConsistently(
         }
         else if (reverse[nb.Triangle] != wanted)
         {
-          if (!disagreeing)
+          if (!contradictions)
           {
             return false;
           }
-          contradictions.emplace_back(nb.Low, nb.High);
+          contradictions->emplace_back(nb.Low, nb.High);
         }
       }
     }
   }
-  if (disagreeing)
-  {
-    std::sort(contradictions.begin(), contradictions.end());
-    contradictions.erase(std::unique(contradictions.begin(), contradictions.end()), contradictions.end());
-    *disagreeing = std::move(contradictions);
-  }
+  return true;
+}
+
+// Reverses the triangles marked 1; returns how many.
+Index ReverseMarked(const std::vector<signed char>& reverse, Triangles& triangles)
+{
   Index count = 0;
   for (Index t = 0; t < triangles.rows(); ++t)
   {
@@ -611,6 +627,34 @@ bool OrientConsistently(
       ++count;
     }
   }
+  return count;
+}
+}
+
+bool OrientConsistently(
+  Triangles& triangles, Index* reversedTriangles, std::vector<EdgeKey>* disagreeing)
+{
+  if (reversedTriangles)
+  {
+    *reversedTriangles = 0;
+  }
+  const Index numberOfPoints = UsedPointCount(triangles);
+  const std::vector<char> valid = ValidTriangles(triangles, numberOfPoints);
+  OrientationAdjacency adjacency;
+  std::vector<EdgeKey> contradictions;
+  std::vector<signed char> reverse;
+  if (!BuildOrientationAdjacency(triangles, valid, numberOfPoints, adjacency) ||
+    !ChooseReversals(valid, adjacency, reverse, disagreeing ? &contradictions : nullptr))
+  {
+    return false;
+  }
+  if (disagreeing)
+  {
+    std::sort(contradictions.begin(), contradictions.end());
+    contradictions.erase(std::unique(contradictions.begin(), contradictions.end()), contradictions.end());
+    *disagreeing = std::move(contradictions);
+  }
+  const Index count = ReverseMarked(reverse, triangles);
   if (reversedTriangles)
   {
     *reversedTriangles = count;
