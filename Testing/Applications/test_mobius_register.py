@@ -20,6 +20,14 @@ run, check, expect_failure = harness.run, harness.check, harness.expect_failure
 # --help and --version
 code, out, _ = run("--help")
 check(code == 0 and "usage: mobius-register" in out and "default 256" in out, "--help")
+# --help and the parser come from one table: every option listed has its help and is known.
+# Four more arguments make each run a usage error (or --help, --version) at once.
+for line in (line for line in out.splitlines() if line.startswith("  -")):
+    label, _, text = line.strip().partition("  ")
+    check(text.strip() != "", f"--help gives no help for {label}")
+    for name in (word.rstrip(",") for word in label.split() if word.startswith("-")):
+        code, _, err = run(name, "a", "b", "c", "d")
+        check(code in (0, 2) and "unknown option" not in err, f"{name}, listed by --help: {code} {err!r}")
 code, out, _ = run("--version")
 check(code == 0 and out.startswith("mobius-register "), "--version")
 
