@@ -269,7 +269,7 @@ public:
    * second thread, and end each point halfway between its polished image and the inverse
    * of the other direction's map (default on; InverseAveraging.h). The polish favours the
    * surface it deforms, and the average is nearer the truth than either direction: about
-   * 3-4% lower errors on FAUST_r pairs, for a second extension and polish (docs/accuracy.md,
+   * 3-4% lower errors on FAUST_r pairs, for a second extension and polish (docs/DEVELOPMENT.md,
    * "Both directions"). On surfaces of up to 10,000 vertices the two polishes also meet
    * every 10 iterations, each map moving towards the other's inverse: 5.6% lower than one
    * direction in all (FAUST_r set A 1.341 -> 1.266), about 0.07 s more per 5,000-vertex

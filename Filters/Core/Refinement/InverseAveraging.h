@@ -3,7 +3,7 @@
 // rigidly as it can onto the target) each favour one surface, and where the two bodies do not
 // correspond rigidly (a torso that stretches differently in two poses) the map X -> Y and the
 // inverse of Y -> X slide apart by similar amounts in different directions. Halfway between
-// them is nearer the truth than either (docs/accuracy.md, "Both directions").
+// them is nearer the truth than either (docs/DEVELOPMENT.md, "Both directions").
 #ifndef mobius_InverseAveraging_h
 #define mobius_InverseAveraging_h
 
@@ -23,7 +23,7 @@ namespace mobius
 constexpr double kInverseReach = 3.0;
 
 /// How far towards the inverse: halfway. On 30 FAUST_r training pairs, 0.35 and 0.65 were
-/// both worse than 0.5 (docs/accuracy.md, "Both directions").
+/// both worse than 0.5 (docs/DEVELOPMENT.md, "Both directions").
 constexpr double kInverseWeight = 0.5;
 
 /// How many of the polish's iterations run between two meetings of the directions: the
@@ -32,7 +32,7 @@ constexpr double kInverseWeight = 0.5;
 /// prior of each side works on a map the other side has already moved. On FAUST_r training
 /// pairs (5,000 vertices) meetings every 10 of the 60 iterations scored 1.4% better than two
 /// whole polishes of 60 with one meeting between them, at about the same cost (every 6:
-/// 1.6%, every 15: 0.7%; docs/accuracy.md, "Meeting while polishing").
+/// 1.6%, every 15: 0.7%; docs/DEVELOPMENT.md, "Meeting while polishing").
 constexpr int kMeetingInterval = 10;
 
 /// Pairs with a surface of more vertices than this are polished without meetings (and

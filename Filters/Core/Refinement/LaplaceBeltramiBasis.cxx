@@ -222,7 +222,7 @@ bool RayleighRitz(const SparseMatrix& stiffness, const MassRoot& root, int count
 // Eigenpairs per window of SlicedLanczos. Lanczos with full reorthogonalization costs about
 // vertices x (2k)^2 for k eigenpairs, so k in windows of w costs about w / k of that, plus
 // one factorization per window and the overlaps: 120 eigenpairs of a 5,000-vertex body take
-// 0.17 s instead of 0.31 s (docs/accuracy.md, "Refinement cost").
+// 0.17 s instead of 0.31 s (docs/DEVELOPMENT.md, "Refinement cost").
 constexpr int kEigenpairsPerWindow = 40;
 
 // The `count` eigenpairs of smallest eigenvalue by spectrum slicing: the lowest window at

@@ -33,7 +33,7 @@ struct LaplaceBeltramiBasis
 /// Cholesky factorizations, with single-precision Lanczos vectors and a double-precision
 /// Rayleigh-Ritz step (eigenfunctions mass-orthonormal to double precision; eigenvalues the
 /// Rayleigh quotients). More than 40 eigenpairs are found in slices of the spectrum (one
-/// shift per window of about 40; docs/accuracy.md, "Refinement cost"), checked complete by
+/// shift per window of about 40; docs/DEVELOPMENT.md, "Refinement cost"), checked complete by
 /// the factorization's inertia, with one window as the fallback. Needs a closed, manifold,
 /// oriented mesh. Returns false with `error` set if the Laplacian cannot be built or the
 /// eigensolver does not converge.

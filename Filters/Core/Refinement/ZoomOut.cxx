@@ -478,7 +478,7 @@ DenseMap ExtendToAllVertices(const SpectralSurface& source, const SpectralSurfac
     transformedTarget = targetEmbedding * c.transpose();
     // The nearest rows themselves, not a descent's local minima: on FAUST_r pairs a descent
     // stops short on 9-16% of the vertices, typically 2 edges from the nearest row and up to
-    // 30, and maps with the nearest rows are about 2% better (docs/accuracy.md, "The exact
+    // 30, and maps with the nearest rows are about 2% better (docs/DEVELOPMENT.md, "The exact
     // nearest vertex"). The target's sample cells are the search's clusters.
     result.NearestVertex = NearestRowsByClusters(sourceQueries,
       Appended(transformedTarget, targetCurvatures), target.SampleLabels,
