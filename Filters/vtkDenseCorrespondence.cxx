@@ -1,11 +1,10 @@
 #include "vtkDenseCorrespondence.h"
 
-#include "MeshAdjacency.h"
-#include "RegistrationParameters.h"
-#include "ParallelFor.h"
-#include "SphericalPointLocator.h"
+#include "DenseCorrespondence.h"
 #include "MobiusCorrespondenceOutput.h"
 #include "MobiusSphericalMapData.h"
+#include "ParallelFor.h"
+#include "RegistrationParameters.h"
 
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -15,10 +14,79 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 
-#include <algorithm>
-#include <sstream>
+#include <utility>
 
 vtkStandardNewMacro(vtkDenseCorrespondence);
+
+namespace
+{
+const char* const InputNames[2] = { "Source (port 0)", "Target (port 1)" };
+
+// Input `input`'s spherical map as the core reads it; the problem if it cannot be read.
+// The map points are located in (`located`) needs triangles; SurfacePoints are needed where
+// they make the output (`needsSurface`).
+std::string ReadMap(vtkPolyData* input, bool located, bool needsSurface, const char* name,
+  mobius::CorrespondenceMap& map)
+{
+  map.Name = name;
+  std::string error = mobius::vtk::ExtractPoints(input, map.Sphere);
+  if (error.empty())
+  {
+    error = mobius::vtk::ExtractTriangles(input, map.Triangles);
+  }
+  if (error.empty() && located && map.Triangles.rows() == 0)
+  {
+    error = "it has no triangles to locate points in";
+  }
+  if (error.empty())
+  {
+    error = mobius::vtk::CheckOnUnitSphere(map.Sphere);
+  }
+  if (error.empty() && needsSurface)
+  {
+    error = mobius::vtk::CheckSurfacePoints(input);
+  }
+  return error;
+}
+
+// The filter's direction, landmarks, threads, progress and abort as the core's parameters.
+mobius::DenseCorrespondenceParameters CorrespondenceParameters(
+  vtkDenseCorrespondence* filter, int threads)
+{
+  mobius::DenseCorrespondenceParameters parameters;
+  parameters.TargetToSource =
+    filter->GetDirection() == vtkDenseCorrespondence::TARGET_TO_SOURCE;
+  for (vtkIdType k = 0; k < filter->GetNumberOfLandmarks(); ++k)
+  {
+    parameters.Landmarks.emplace_back(
+      filter->GetLandmarkSourceVertex(k), filter->GetLandmarkTargetVertex(k));
+  }
+  parameters.NumberOfThreads = threads;
+  parameters.Progress = mobius::vtk::ProgressAndAbort(filter);
+  return parameters;
+}
+
+// The query map with its points' places in the located map and the data carried over.
+void WriteOutput(vtkDenseCorrespondence* filter, vtkPolyData* inputs[2],
+  const mobius::Triangles& locatedTriangles, mobius::DenseCorrespondence& correspondence,
+  vtkPolyData* output)
+{
+  const bool targetToSource =
+    filter->GetDirection() == vtkDenseCorrespondence::TARGET_TO_SOURCE;
+  mobius::vtk::SurfaceLocations locations;
+  locations.LocatedTriangles = &locatedTriangles;
+  locations.Triangle = std::move(correspondence.Triangle);
+  locations.Barycentric = std::move(correspondence.Barycentric);
+  const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
+    inputs[targetToSource ? 1 : 0], inputs[targetToSource ? 0 : 1], locations,
+    filter->GetOutputGeometry() == vtkDenseCorrespondence::TARGET, output);
+  if (!arrayWarning.empty())
+  {
+    vtkWarningWithObjectMacro(
+      filter, << (targetToSource ? "Source: " : "Target: ") << arrayWarning << ".");
+  }
+}
+}
 
 //------------------------------------------------------------------------------
 vtkDenseCorrespondence::vtkDenseCorrespondence()
@@ -48,105 +116,37 @@ int vtkDenseCorrespondence::ComputeOutput(
     vtkErrorMacro(<< "Both a Source (port 0) and a Target (port 1) spherical map are required.");
     return 0;
   }
-  // The query mesh's vertices are located in the other one.
-  const int query = this->Direction == SOURCE_TO_TARGET ? 0 : 1;
-  const int located = 1 - query;
-  const char* names[2] = { "Source (port 0)", "Target (port 1)" };
-
-  mobius::Points points[2];
-  mobius::Triangles triangles[2];
+  const int located = this->Direction == SOURCE_TO_TARGET ? 1 : 0;
+  mobius::CorrespondenceMap maps[2];
   for (int k = 0; k < 2; ++k)
   {
-    std::string error = mobius::vtk::ExtractPoints(inputs[k], points[k]);
-    if (error.empty())
-    {
-      error = mobius::vtk::ExtractTriangles(inputs[k], triangles[k]);
-    }
-    if (error.empty() && k == located && triangles[k].rows() == 0)
-    {
-      error = "it has no triangles to locate points in";
-    }
-    if (error.empty())
-    {
-      error = mobius::vtk::CheckOnUnitSphere(points[k]);
-    }
-    if (error.empty() && (k == located || this->OutputGeometry == SOURCE))
-    {
-      error = mobius::vtk::CheckSurfacePoints(inputs[k]);
-    }
+    const std::string error = ReadMap(inputs[k], k == located,
+      k == located || this->OutputGeometry == SOURCE, InputNames[k], maps[k]);
     if (!error.empty())
     {
-      vtkErrorMacro(<< "Cannot map: the " << names[k] << ": " << error << ".");
+      vtkErrorMacro(<< "Cannot map: the " << InputNames[k] << ": " << error << ".");
       return 0;
     }
   }
-
-  mobius::SphericalPointLocator locator;
-  std::string error;
-  if (!locator.Build(points[located], triangles[located], error))
-  {
-    vtkErrorMacro(<< "Cannot map: the " << names[located] << ": " << error << ".");
-    return 0;
-  }
-  this->UpdateProgress(0.2);
-  std::vector<mobius::SphericalLocation> locations;
-  auto progress = [this](double fraction) {
-    this->UpdateProgress(0.2 + 0.6 * fraction);
-    return !this->GetAbortExecute();
-  };
   const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
-  if (!locator.LocateAll(points[query], locations, threads, progress))
+  mobius::DenseCorrespondence correspondence =
+    mobius::CorrespondSphericalMaps(maps, CorrespondenceParameters(this, threads));
+  if (correspondence.Stopped)
   {
-    if (!this->GetAbortExecute())
-    {
-      vtkErrorMacro(<< "Point location failed.");
-    }
     return 0;
   }
-
-  mobius::vtk::SurfaceLocations map;
-  map.LocatedTriangles = &triangles[located];
-  vtkIdType clamped = 0;
-  double maximumClampDistance = 0;
-  for (const auto& location : locations)
+  if (!correspondence.Error.empty())
   {
-    map.Triangle.push_back(location.Triangle);
-    map.Barycentric.push_back(location.Barycentric);
-    clamped += location.Clamped ? 1 : 0;
-    maximumClampDistance = std::max(maximumClampDistance, location.AngularDistance);
-  }
-  // The landmarks on their own vertices: the located mesh's landmark, a triangle's corner.
-  error = mobius::vtk::CheckLandmarkPoints(this->Landmarks, points[0].rows(), points[1].rows());
-  const mobius::VertexLists corners =
-    mobius::VertexTriangles(points[located].rows(), triangles[located]);
-  for (size_t k = 0; error.empty() && k < this->Landmarks.size(); ++k)
-  {
-    const vtkIdType ends[2] = { this->Landmarks[k].first, this->Landmarks[k].second };
-    const vtkIdType from = ends[query], to = ends[located];
-    if (corners.Begin(to) == corners.End(to))
-    {
-      error = "landmark " + std::to_string(k) + " names point " + std::to_string(to) +
-        ", which is in no triangle";
-      break;
-    }
-    mobius::PlaceAtVertex(triangles[located], corners, to, map.Triangle[from], map.Barycentric[from]);
-  }
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< "Cannot map: " << error << ".");
+    vtkErrorMacro(<< correspondence.Error);
     return 0;
   }
-  const std::string arrayWarning = mobius::vtk::AssembleCorrespondence(
-    inputs[query], inputs[located], map, this->OutputGeometry == TARGET, output);
-  if (!arrayWarning.empty())
-  {
-    vtkWarningMacro(<< (located == 1 ? "Target: " : "Source: ") << arrayWarning << ".");
-  }
-
+  WriteOutput(this, inputs, maps[located].Triangles, correspondence, output);
+  vtkFieldData* fieldData = output->GetFieldData();
   mobius::vtk::SetFieldCount(
-    output->GetFieldData(), "ClampedPoints", static_cast<vtkIdType>(clamped));
-  mobius::vtk::SetFieldValue(output->GetFieldData(), "MaximumClampDistance", maximumClampDistance);
-  mobius::vtk::SetFieldInteger(output->GetFieldData(), "NumberOfThreadsUsed", threads);
+    fieldData, "ClampedPoints", static_cast<vtkIdType>(correspondence.ClampedPoints));
+  mobius::vtk::SetFieldValue(
+    fieldData, "MaximumClampDistance", correspondence.MaximumClampDistance);
+  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
   this->UpdateProgress(1.0);
   return 1;
 }

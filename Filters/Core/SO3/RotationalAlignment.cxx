@@ -2,6 +2,7 @@
 
 #include "LandmarkAlignment.h"
 #include "RegistrationParameters.h"
+#include "StopWatchingProgress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,21 +13,6 @@ namespace mobius
 {
 namespace
 {
-// Passes the fraction done on to the caller's progress, and remembers whether it asked to
-// stop (the algorithms then fail or come back aborted: the alignment is stopped, not wrong).
-struct StopWatchingProgress
-{
-  const ProgressCallback& Progress;
-  bool StopAsked = false;
-
-  bool operator()(double fraction)
-  {
-    const bool goOn = !this->Progress || this->Progress(fraction);
-    this->StopAsked = this->StopAsked || !goOn;
-    return goOn;
-  }
-};
-
 // The grid size's problem, if it has one: odd, too coarse, or more than the machine's
 // memory; a warning when it is coarse enough to turn the map.
 std::string CheckResolution(int resolution, std::vector<std::string>& warnings)
