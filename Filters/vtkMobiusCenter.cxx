@@ -1,9 +1,8 @@
 #include "vtkMobiusCenter.h"
 
-#include "RegistrationParameters.h"
-#include "GeneralizedCentering.h"
-#include "MobiusCentering.h"
+#include "MapCentering.h"
 #include "MobiusSphericalMapData.h"
+#include "RegistrationParameters.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -14,6 +13,55 @@
 #include "vtkPolyData.h"
 
 vtkStandardNewMacro(vtkMobiusCenter);
+
+namespace
+{
+// The filter's settings, progress and abort as the core's parameters.
+mobius::MapCenteringParameters CenteringParameters(vtkMobiusCenter* filter)
+{
+  mobius::MapCenteringParameters parameters;
+  parameters.Mobius.Tolerance = filter->GetTolerance();
+  parameters.Mobius.MaximumNumberOfIterations = filter->GetMaximumNumberOfIterations();
+  parameters.Degree = filter->GetDegree();
+  parameters.Generalized.Tolerance = filter->GetGeneralizedTolerance();
+  parameters.Generalized.MaximumNumberOfIterations =
+    filter->GetGeneralizedMaximumNumberOfIterations();
+  parameters.Progress = mobius::vtk::ProgressAndAbort(filter);
+  return parameters;
+}
+
+// |mu| before and after, the steps of both centerings, the degree, the Möbius
+// transformation as a Lorentz matrix and its inversions' centers.
+void AddCenteringFields(const mobius::MapCentering& centering, int degree, vtkFieldData* fieldData)
+{
+  const mobius::MobiusCenteringResult& result = centering.Mobius;
+  mobius::vtk::SetFieldValue(fieldData, "CenterOfMassNorm", result.CenterOfMassNorm);
+  mobius::vtk::SetFieldValue(
+    fieldData, "InitialCenterOfMassNorm", result.InitialCenterOfMassNorm);
+  mobius::vtk::SetFieldInteger(fieldData, "CenteringIterations", result.NumberOfIterations);
+  mobius::vtk::SetFieldInteger(fieldData, "CenteringDegree", degree);
+  mobius::vtk::SetFieldInteger(
+    fieldData, "GeneralizedCenteringIterations", centering.Generalized.NumberOfIterations);
+  double lorentz[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      lorentz[4 * r + c] = result.LorentzTransform(r, c);
+    }
+  }
+  mobius::vtk::SetFieldValues(fieldData, "MobiusTransform", lorentz, 16);
+  vtkNew<vtkDoubleArray> centers;
+  centers->SetName("InversionCenters");
+  centers->SetNumberOfComponents(3);
+  for (const auto& c : result.InversionCenters)
+  {
+    centers->InsertNextTuple3(c.x(), c.y(), c.z());
+  }
+  fieldData->RemoveArray("InversionCenters");
+  fieldData->AddArray(centers);
+}
+}
 
 //------------------------------------------------------------------------------
 vtkMobiusCenter::vtkMobiusCenter()
@@ -35,7 +83,6 @@ int vtkMobiusCenter::ComputeOutput(
     vtkErrorMacro(<< "Missing input or output polydata.");
     return 0;
   }
-
   mobius::Points points;
   mobius::Triangles triangles;
   mobius::Vector areas;
@@ -46,93 +93,28 @@ int vtkMobiusCenter::ComputeOutput(
     vtkErrorMacro(<< "Cannot center: " << error << ".");
     return 0;
   }
-
-  mobius::MobiusCenteringParameters parameters;
-  parameters.Tolerance = this->Tolerance;
-  parameters.MaximumNumberOfIterations = this->MaximumNumberOfIterations;
-  mobius::MobiusCenteringResult result;
-  auto progress = [this](double fraction) {
-    this->UpdateProgress(fraction);
-    return !this->GetAbortExecute();
-  };
-  if (!mobius::CenterSphericalMap(points, triangles, areas, parameters, result, progress))
+  const mobius::MapCentering centering =
+    mobius::CenterMap(points, triangles, areas, CenteringParameters(this));
+  if (!centering.Error.empty())
   {
-    if (!this->GetAbortExecute())
-    {
-      vtkErrorMacro(<< "Centering failed: " << result.Error << ".");
-    }
+    vtkErrorMacro(<< centering.Error);
     return 0;
   }
-  mobius::GeneralizedCenteringResult generalized;
-  if (this->Degree > 1)
+  if (centering.Stopped)
   {
-    if (triangles.rows() == 0)
-    {
-      vtkErrorMacro(<< "Cannot center: Degree " << this->Degree
-                    << " needs triangles; a point set can only be centered with Degree 1.");
-      return 0;
-    }
-    mobius::GeneralizedCenteringParameters generalParameters;
-    generalParameters.Degree = this->Degree;
-    generalParameters.Tolerance = this->GeneralizedTolerance;
-    generalParameters.MaximumNumberOfIterations = this->GeneralizedMaximumNumberOfIterations;
-    if (!mobius::CenterWithSphericalHarmonics(
-          points, triangles, areas, generalParameters, generalized, progress))
-    {
-      if (!this->GetAbortExecute())
-      {
-        vtkErrorMacro(<< "Generalized centering failed: " << generalized.Error << ".");
-      }
-      return 0;
-    }
-    result.CenterOfMassNorm = generalized.CenterOfMassNorm;
-    result.Converged = generalized.Converged;
+    return 0;
   }
-  if (!result.Converged)
+  for (const std::string& warning : centering.Warnings)
   {
-    const bool generalizedRun = this->Degree > 1;
-    vtkWarningMacro(<< (generalizedRun ? "Generalized centering" : "Centering") << " stopped after "
-                    << (generalizedRun ? generalized.NumberOfIterations : result.NumberOfIterations)
-                    << " iterations with |mu| = " << result.CenterOfMassNorm
-                    << " above the tolerance "
-                    << (generalizedRun ? this->GeneralizedTolerance : this->Tolerance) << ".");
+    vtkWarningMacro(<< warning);
   }
-
   output->ShallowCopy(input);
   mobius::vtk::SetPoints(output, points);
   // The centered map's own distortion (the input's arrays describe the uncentered one),
   // colored by default by the area it gives each triangle: what centering evens out.
   // (The output's cell data holds the input's arrays, not the input's cell data object.)
   mobius::vtk::AddDistortionArrays(output, "LogAreaRatio");
-
-  vtkFieldData* fieldData = output->GetFieldData();
-  mobius::vtk::SetFieldValue(fieldData, "CenterOfMassNorm", result.CenterOfMassNorm);
-  mobius::vtk::SetFieldValue(
-    fieldData, "InitialCenterOfMassNorm", result.InitialCenterOfMassNorm);
-  mobius::vtk::SetFieldInteger(fieldData, "CenteringIterations", result.NumberOfIterations);
-  mobius::vtk::SetFieldInteger(fieldData, "CenteringDegree", this->Degree);
-  mobius::vtk::SetFieldInteger(
-    fieldData, "GeneralizedCenteringIterations", generalized.NumberOfIterations);
-  double lorentz[16];
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      lorentz[4 * r + c] = result.LorentzTransform(r, c);
-    }
-  }
-  mobius::vtk::SetFieldValues(fieldData, "MobiusTransform", lorentz, 16);
-
-  vtkNew<vtkDoubleArray> centers;
-  centers->SetName("InversionCenters");
-  centers->SetNumberOfComponents(3);
-  for (const auto& c : result.InversionCenters)
-  {
-    centers->InsertNextTuple3(c.x(), c.y(), c.z());
-  }
-  fieldData->RemoveArray("InversionCenters");
-  fieldData->AddArray(centers);
-
+  AddCenteringFields(centering, this->Degree, output->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;
 }
