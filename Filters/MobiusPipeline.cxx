@@ -387,6 +387,189 @@ bool PutOnInputs(vtkPolyData* source, vtkPolyData* target,
   }
   return true;
 }
+
+// The target's mesh for its job when the two meshes are mapped side by side: a copy of its
+// own. The meshes may share arrays (one mesh given as both inputs, or a vtkTransformFilter's
+// output, which shares its input's cells), and VTK reads and builds some state inside an
+// array or a mesh (a cell array's traversal cursor, a mesh's cell structures), which two
+// threads must not do at once.
+vtkSmartPointer<vtkPolyData> TargetForItsJob(vtkPolyData* target, bool sideBySide)
+{
+  vtkSmartPointer<vtkPolyData> targetCopy = target;
+  if (sideBySide)
+  {
+    targetCopy = vtkSmartPointer<vtkPolyData>::New();
+    targetCopy->DeepCopy(target);
+  }
+  return targetCopy;
+}
+
+// The two meshes' jobs' timings and warnings, in the order source, target.
+void MergeMeshJobs(const PipelineResult parts[2], PipelineResult& result)
+{
+  for (int k = 0; k < 2; ++k)
+  {
+    result.Stages.insert(result.Stages.end(), parts[k].Stages.begin(), parts[k].Stages.end());
+    result.Warnings.insert(result.Warnings.end(), parts[k].Warnings.begin(), parts[k].Warnings.end());
+  }
+}
+
+// Both meshes' conformal maps and centerings (none for centered maps given). They are
+// independent, and the conformal flow runs on one core: with two threads or more the
+// target's runs beside the source's (on the man, 17,495 vertices: 0.5 s of a ~3 s job).
+// Each job times and reports into its own result; they are merged in the order source,
+// target. False with the first mesh's error.
+bool MapAndCenterBoth(vtkPolyData* source, vtkPolyData* target, const std::string names[2],
+  const mobius::RegistrationParameters& options, int threads, const StageProgress& progress,
+  PipelineResult& result, std::string& error)
+{
+  const bool sideBySide = threads > 1 && !options.InputsAreCenteredMaps;
+  const vtkSmartPointer<vtkPolyData> targetCopy = TargetForItsJob(target, sideBySide);
+  vtkPolyData* inputs[2] = { source, targetCopy };
+  vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
+  vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
+  const char* which[2] = { "source", "target" };
+  std::mutex progressLock;
+  const StageProgress sharedProgress = [&](const std::string& stage, double fraction) {
+    if (progress)
+    {
+      std::lock_guard<std::mutex> guard(progressLock);
+      progress(stage, fraction);
+    }
+  };
+  PipelineResult parts[2];
+  std::string errors[2];
+  bool ok[2] = { false, false };
+  // In turn (one thread) the target is not mapped after the source failed. ParallelFor
+  // carries an exception of either job here once both are done.
+  mobius::ParallelFor(2, sideBySide ? threads : 1, [&](int k, int) {
+    if (k == 0 || sideBySide || ok[0])
+    {
+      OneMeshStages stages;
+      stages.Which = std::string(" (") + which[k] + ")";
+      stages.Map = stages.Center = !options.InputsAreCenteredMaps;
+      ok[k] = MapAndCenter(inputs[k], names[k], options, stages, sharedProgress, parts[k],
+        *maps[k], *centered[k], errors[k]);
+    }
+  });
+  MergeMeshJobs(parts, result);
+  for (int k = 0; k < 2; ++k)
+  {
+    if (!ok[k])
+    {
+      error = errors[k];
+      return false;
+    }
+  }
+  return true;
+}
+
+// The landmarks as points of the two centered maps, each named once.
+bool FindLandmarksOnMaps(vtkPolyData* source, vtkPolyData* target, const std::string names[2],
+  const mobius::RegistrationParameters& options, PipelineResult& result, std::string& error)
+{
+  return FindLandmarkPoints(source, result.SourceCentered, true, options, names[0],
+           result.SourceLandmarks, error) &&
+    FindLandmarkPoints(target, result.TargetCentered, false, options, names[1],
+      result.TargetLandmarks, error) &&
+    CheckDistinctLandmarkPoints(result.SourceLandmarks, true, options, names[0], error) &&
+    CheckDistinctLandmarkPoints(result.TargetLandmarks, false, options, names[1], error);
+}
+
+// The rotational alignment of the centered maps (vtkSO3Register): result.Aligned.
+bool AlignMaps(const mobius::RegistrationParameters& options, int threads,
+  const std::string& pair, const StageProgress& progress, PipelineResult& result,
+  std::string& error)
+{
+  vtkNew<vtkSO3Register> registration;
+  registration->SetSourceData(result.SourceCentered);
+  registration->SetTargetData(result.TargetCentered);
+  registration->SetResolution(options.Resolution);
+  registration->SetSmoothingTime(options.SmoothingTime);
+  registration->SetTransformMode(options.TransformMode);
+  registration->SetNumberOfCandidates(options.NumberOfCandidates);
+  registration->SetNumberOfThreads(threads);
+  registration->SetLandmarkMode(options.LandmarkMode);
+  AddLandmarkPoints(result, registration);
+  return RunStage(
+    registration, "rotational alignment", pair, progress, result, result.Aligned, error);
+}
+
+// The Möbius map (vtkDenseCorrespondence): result.MobiusCorrespondence.
+bool CorrespondMaps(const mobius::RegistrationParameters& options, int threads,
+  const std::string& pair, const StageProgress& progress, PipelineResult& result,
+  std::string& error)
+{
+  vtkNew<vtkDenseCorrespondence> correspondence;
+  correspondence->SetSourceData(result.Aligned);
+  correspondence->SetTargetData(result.TargetCentered);
+  correspondence->SetOutputGeometry(options.OutputGeometry);
+  correspondence->SetNumberOfThreads(threads);
+  AddLandmarkPoints(result, correspondence);
+  return RunStage(correspondence, "dense correspondence", pair, progress, result,
+    result.MobiusCorrespondence, error);
+}
+
+// The refinement's spectral search compares BasisSize eigenfunctions and needs about twice
+// as many vertices to sample them: on a smaller mesh the Möbius map is the answer. True,
+// with the warning saying so, when the refinement is skipped.
+bool SkipsRefinement(
+  const mobius::RegistrationParameters& options, const std::string& pair, PipelineResult& result)
+{
+  const vtkIdType smallest = std::min(
+    result.Aligned->GetNumberOfPoints(), result.TargetCentered->GetNumberOfPoints());
+  if (mobius::RefinementApplies(smallest, options.BasisSize))
+  {
+    return false;
+  }
+  result.Warnings.push_back(pair + ": refinement skipped: a map has " +
+    std::to_string(smallest) + " vertices, fewer than twice the basis size " +
+    std::to_string(options.BasisSize) + " (BasisSize); the result is the Moebius map");
+  return true;
+}
+
+// The refined map (vtkCorrespondenceRefinement): result.Correspondence.
+bool RefineMap(const mobius::RegistrationParameters& options, int threads,
+  const std::string& pair, const StageProgress& progress, PipelineResult& result,
+  std::string& error)
+{
+  vtkNew<vtkCorrespondenceRefinement> refinement;
+  refinement->SetSourceData(result.Aligned);
+  refinement->SetTargetData(result.TargetCentered);
+  refinement->SetOutputGeometry(options.OutputGeometry);
+  refinement->SetBasisSize(options.BasisSize);
+  refinement->SetStartBasisSize(
+    mobius::ClampToBasisSize(refinement->GetStartBasisSize(), options.BasisSize));
+  refinement->SetGeometricPolish(options.GeometricPolish);
+  refinement->SetBothDirections(options.BothDirections);
+  refinement->SetCandidate(options.Candidate);
+  refinement->SetNumberOfThreads(threads);
+  AddLandmarkPoints(result, refinement);
+  return RunStage(
+    refinement, "refinement", pair, progress, result, result.Correspondence, error);
+}
+
+// After the final map (`succeeded`): the landmarks' residuals, the warning when they
+// disagree with the map, and the map on the meshes as given; the job's wall time either way.
+bool FinishRegistration(vtkPolyData* source, vtkPolyData* target,
+  const mobius::RegistrationParameters& options, const std::string& pair,
+  std::chrono::steady_clock::time_point started, bool succeeded, PipelineResult& result,
+  std::string& error)
+{
+  if (succeeded)
+  {
+    AddLandmarkResiduals(result);
+    const std::string disagreement = LandmarkDisagreement(result, options);
+    if (!disagreement.empty())
+    {
+      result.Warnings.push_back(pair + ": " + disagreement);
+    }
+    succeeded = PutOnInputs(source, target, options, result, error);
+  }
+  result.WallSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return succeeded;
+}
 }
 
 bool MapAndCenter(vtkPolyData* mesh, const std::string& name,
@@ -480,149 +663,19 @@ bool RunRegistrationPipeline(vtkPolyData* source, vtkPolyData* target,
 {
   const auto started = std::chrono::steady_clock::now();
   const int threads = mobius::ResolveThreadCount(options.NumberOfThreads);
-  // When the two meshes are mapped side by side, the target's job reads a copy of its own:
-  // the meshes may share arrays (one mesh given as both inputs, or a vtkTransformFilter's
-  // output, which shares its input's cells), and VTK reads and builds some state inside an
-  // array or a mesh (a cell array's traversal cursor, a mesh's cell structures), which two
-  // threads must not do at once.
-  const bool sideBySide = threads > 1 && !options.InputsAreCenteredMaps;
-  vtkSmartPointer<vtkPolyData> targetCopy = target;
-  if (sideBySide)
-  {
-    targetCopy = vtkSmartPointer<vtkPolyData>::New();
-    targetCopy->DeepCopy(target);
-  }
-  vtkPolyData* inputs[2] = { source, targetCopy };
   const std::string names[2] = { sourceName, targetName };
-  vtkSmartPointer<vtkPolyData>* maps[2] = { &result.SourceMap, &result.TargetMap };
-  vtkSmartPointer<vtkPolyData>* centered[2] = { &result.SourceCentered, &result.TargetCentered };
-  const char* which[2] = { "source", "target" };
-  // The two meshes' conformal maps and centerings are independent, and the conformal flow
-  // runs on one core: with two threads or more the target's runs beside the source's (on
-  // the man, 17,495 vertices: 0.5 s of a ~3 s job). Each job times and reports into its own
-  // result; they are merged in the order source, target.
-  std::mutex progressLock;
-  const StageProgress sharedProgress = [&](const std::string& stage, double fraction) {
-    if (progress)
-    {
-      std::lock_guard<std::mutex> guard(progressLock);
-      progress(stage, fraction);
-    }
-  };
-  PipelineResult parts[2];
-  std::string errors[2];
-  auto mapAndCenter = [&](int k) {
-    OneMeshStages stages;
-    stages.Which = std::string(" (") + which[k] + ")";
-    stages.Map = stages.Center = !options.InputsAreCenteredMaps;
-    return MapAndCenter(inputs[k], names[k], options, stages, sharedProgress, parts[k], *maps[k],
-      *centered[k], errors[k]);
-  };
-  bool ok[2] = { false, false };
-  // In turn (one thread) the target is not mapped after the source failed. ParallelFor
-  // carries an exception of either job here once both are done.
-  mobius::ParallelFor(2, sideBySide ? threads : 1, [&](int k, int) {
-    if (k == 0 || sideBySide || ok[0])
-    {
-      ok[k] = mapAndCenter(k);
-    }
-  });
-  for (int k = 0; k < 2; ++k)
-  {
-    result.Stages.insert(result.Stages.end(), parts[k].Stages.begin(), parts[k].Stages.end());
-    result.Warnings.insert(result.Warnings.end(), parts[k].Warnings.begin(), parts[k].Warnings.end());
-  }
-  for (int k = 0; k < 2; ++k)
-  {
-    if (!ok[k])
-    {
-      error = errors[k];
-      return false;
-    }
-  }
-
-  if (!FindLandmarkPoints(source, result.SourceCentered, true, options, sourceName,
-        result.SourceLandmarks, error) ||
-    !FindLandmarkPoints(target, result.TargetCentered, false, options, targetName,
-      result.TargetLandmarks, error) ||
-    !CheckDistinctLandmarkPoints(result.SourceLandmarks, true, options, sourceName, error) ||
-    !CheckDistinctLandmarkPoints(result.TargetLandmarks, false, options, targetName, error))
-  {
-    return false;
-  }
-
-  vtkNew<vtkSO3Register> registration;
-  registration->SetSourceData(result.SourceCentered);
-  registration->SetTargetData(result.TargetCentered);
-  registration->SetResolution(options.Resolution);
-  registration->SetSmoothingTime(options.SmoothingTime);
-  registration->SetTransformMode(options.TransformMode);
-  registration->SetNumberOfCandidates(options.NumberOfCandidates);
-  registration->SetNumberOfThreads(threads);
-  registration->SetLandmarkMode(options.LandmarkMode);
-  AddLandmarkPoints(result, registration);
-  if (!RunStage(registration, "rotational alignment", sourceName + " -> " + targetName, progress,
-        result, result.Aligned, error))
-  {
-    return false;
-  }
-
-  vtkNew<vtkDenseCorrespondence> correspondence;
-  correspondence->SetSourceData(result.Aligned);
-  correspondence->SetTargetData(result.TargetCentered);
-  correspondence->SetOutputGeometry(options.OutputGeometry);
-  correspondence->SetNumberOfThreads(threads);
-  AddLandmarkPoints(result, correspondence);
-  if (!RunStage(correspondence, "dense correspondence", sourceName + " -> " + targetName,
-        progress, result, result.MobiusCorrespondence, error))
+  const std::string pair = sourceName + " -> " + targetName;
+  if (!MapAndCenterBoth(source, target, names, options, threads, progress, result, error) ||
+    !FindLandmarksOnMaps(source, target, names, options, result, error) ||
+    !AlignMaps(options, threads, pair, progress, result, error) ||
+    !CorrespondMaps(options, threads, pair, progress, result, error))
   {
     return false;
   }
   result.Correspondence = result.MobiusCorrespondence;
-  auto finish = [&](bool succeeded) {
-    if (succeeded)
-    {
-      AddLandmarkResiduals(result);
-      const std::string disagreement = LandmarkDisagreement(result, options);
-      if (!disagreement.empty())
-      {
-        result.Warnings.push_back(sourceName + " -> " + targetName + ": " + disagreement);
-      }
-      succeeded = PutOnInputs(source, target, options, result, error);
-    }
-    result.WallSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    return succeeded;
-  };
-  if (!options.Refine)
-  {
-    return finish(true);
-  }
-  // The refinement's spectral search compares BasisSize eigenfunctions and needs about
-  // twice as many vertices to sample them: on a smaller mesh the Möbius map is the answer.
-  const vtkIdType smallest = std::min(
-    result.Aligned->GetNumberOfPoints(), result.TargetCentered->GetNumberOfPoints());
-  if (!mobius::RefinementApplies(smallest, options.BasisSize))
-  {
-    result.Warnings.push_back(sourceName + " -> " + targetName + ": refinement skipped: a map has " +
-      std::to_string(smallest) + " vertices, fewer than twice the basis size " +
-      std::to_string(options.BasisSize) + " (BasisSize); the result is the Moebius map");
-    return finish(true);
-  }
-  vtkNew<vtkCorrespondenceRefinement> refinement;
-  refinement->SetSourceData(result.Aligned);
-  refinement->SetTargetData(result.TargetCentered);
-  refinement->SetOutputGeometry(options.OutputGeometry);
-  refinement->SetBasisSize(options.BasisSize);
-  refinement->SetStartBasisSize(
-    mobius::ClampToBasisSize(refinement->GetStartBasisSize(), options.BasisSize));
-  refinement->SetGeometricPolish(options.GeometricPolish);
-  refinement->SetBothDirections(options.BothDirections);
-  refinement->SetCandidate(options.Candidate);
-  refinement->SetNumberOfThreads(threads);
-  AddLandmarkPoints(result, refinement);
-  return finish(RunStage(refinement, "refinement", sourceName + " -> " + targetName, progress,
-    result, result.Correspondence, error));
+  const bool succeeded = !options.Refine || SkipsRefinement(options, pair, result) ||
+    RefineMap(options, threads, pair, progress, result, error);
+  return FinishRegistration(source, target, options, pair, started, succeeded, result, error);
 }
 
 bool RunSymmetryPipeline(vtkPolyData* mesh, const std::string& name,

@@ -9,11 +9,9 @@
 
 #include "vtkAbstractArray.h"
 #include "vtkDataArray.h"
-#include "vtkPointData.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -113,6 +111,72 @@ double StageStart(const std::string& stage, double& length)
   }
   length = 0.3; // the refinement
   return 0.7;
+}
+
+// The job's progress as the filter's, from this thread only: the two conformal maps may run
+// on others, where VTK's observers (ParaView's progress bar) must not be called.
+StageProgress ProgressOf(vtkMobiusRegistration* filter)
+{
+  const std::thread::id caller = std::this_thread::get_id();
+  return [filter, caller](const std::string& stage, double fraction) {
+    if (std::this_thread::get_id() != caller || stage.rfind("conformal map", 0) == 0 ||
+      stage.rfind("centering", 0) == 0)
+    {
+      return;
+    }
+    double length = 0;
+    const double start = StageStart(stage, length);
+    filter->UpdateProgress(start + length * fraction);
+  };
+}
+
+// The output's field data: the final map's, with each stage's own under its prefix.
+vtkSmartPointer<vtkFieldData> RegistrationFields(
+  const PipelineResult& result, const mobius::RegistrationParameters& options)
+{
+  auto fields = vtkSmartPointer<vtkFieldData>::New();
+  fields->ShallowCopy(result.Correspondence->GetFieldData());
+  if (!options.InputsAreCenteredMaps) // else these are the inputs, which the caller has
+  {
+    AddStageFields(fields, "SourceMap.", result.SourceMap);
+    AddStageFields(fields, "TargetMap.", result.TargetMap);
+    AddStageFields(fields, "SourceCentering.", result.SourceCentered, result.SourceMap);
+    AddStageFields(fields, "TargetCentering.", result.TargetCentered, result.TargetMap);
+  }
+  AddStageFields(fields, "Registration.", result.Aligned, result.SourceCentered);
+  if (result.Correspondence != result.MobiusCorrespondence)
+  {
+    AddStageFields(fields, "MobiusCorrespondence.", result.MobiusCorrespondence, result.Aligned);
+  }
+  return fields;
+}
+
+// Outputs 1 to 3: the aligned source map, the target's centered map, and the map on the
+// target's own mesh (every vertex of the target as given, when its repair changed it).
+void WriteStageOutputs(vtkMobiusRegistration* filter, vtkPolyData* target,
+  const mobius::RegistrationParameters& options, const PipelineResult& result,
+  vtkInformationVector* outputVector)
+{
+  if (vtkPolyData* aligned = vtkPolyData::GetData(outputVector, 1))
+  {
+    aligned->ShallowCopy(result.Aligned);
+  }
+  if (vtkPolyData* targetSphere = vtkPolyData::GetData(outputVector, 2))
+  {
+    targetSphere->ShallowCopy(result.TargetCentered);
+  }
+  vtkPolyData* pulledBack = vtkPolyData::GetData(outputVector, 3);
+  const vtkSmartPointer<vtkPolyData> targetSurface =
+    !options.InputsAreCenteredMaps && mobius::vtk::MapWasRepaired(result.TargetMap)
+    ? mobius::vtk::SurfaceAsGiven(target)
+    : vtkSmartPointer<vtkPolyData>(result.TargetCentered);
+  if (pulledBack &&
+    !mobius::vtk::PullBackToTarget(result.Aligned,
+      result.Correspondence->GetPointData()->GetArray("MappedPoints"), targetSurface, pulledBack))
+  {
+    vtkWarningWithObjectMacro(
+      filter, << "The map could not be shown on the target's own mesh (output 3).");
+  }
 }
 }
 
@@ -214,24 +278,10 @@ int vtkMobiusRegistration::ComputeOutput(
     vtkErrorMacro(<< outOfRange);
     return 0;
   }
-
-  // Progress from this thread only: the two conformal maps may run on others, where VTK's
-  // observers (ParaView's progress bar) must not be called.
-  const std::thread::id caller = std::this_thread::get_id();
-  const StageProgress progress = [this, caller](const std::string& stage, double fraction) {
-    if (std::this_thread::get_id() != caller || stage.rfind("conformal map", 0) == 0 ||
-      stage.rfind("centering", 0) == 0)
-    {
-      return;
-    }
-    double length = 0;
-    const double start = StageStart(stage, length);
-    this->UpdateProgress(start + length * fraction);
-  };
   PipelineResult result;
   std::string error;
-  const bool succeeded = RunRegistrationPipeline(
-    source, target, this->SourceName, this->TargetName, options, result, error, progress);
+  const bool succeeded = RunRegistrationPipeline(source, target, this->SourceName,
+    this->TargetName, options, result, error, ProgressOf(this));
   for (const auto& warning : result.Warnings)
   {
     vtkWarningMacro(<< warning);
@@ -242,41 +292,8 @@ int vtkMobiusRegistration::ComputeOutput(
     return 0;
   }
   output->ShallowCopy(result.InputCorrespondence);
-  vtkNew<vtkFieldData> fields;
-  fields->ShallowCopy(result.Correspondence->GetFieldData());
-  if (!options.InputsAreCenteredMaps) // else these are the inputs, which the caller has
-  {
-    AddStageFields(fields, "SourceMap.", result.SourceMap);
-    AddStageFields(fields, "TargetMap.", result.TargetMap);
-    AddStageFields(fields, "SourceCentering.", result.SourceCentered, result.SourceMap);
-    AddStageFields(fields, "TargetCentering.", result.TargetCentered, result.TargetMap);
-  }
-  AddStageFields(fields, "Registration.", result.Aligned, result.SourceCentered);
-  if (result.Correspondence != result.MobiusCorrespondence)
-  {
-    AddStageFields(fields, "MobiusCorrespondence.", result.MobiusCorrespondence, result.Aligned);
-  }
-  output->SetFieldData(fields);
-  if (vtkPolyData* aligned = vtkPolyData::GetData(outputVector, 1))
-  {
-    aligned->ShallowCopy(result.Aligned);
-  }
-  if (vtkPolyData* targetSphere = vtkPolyData::GetData(outputVector, 2))
-  {
-    targetSphere->ShallowCopy(result.TargetCentered);
-  }
-  // On the target as given (every vertex of it) when its repair changed it.
-  vtkPolyData* pulledBack = vtkPolyData::GetData(outputVector, 3);
-  const vtkSmartPointer<vtkPolyData> targetSurface =
-    !options.InputsAreCenteredMaps && mobius::vtk::MapWasRepaired(result.TargetMap)
-    ? mobius::vtk::SurfaceAsGiven(target)
-    : vtkSmartPointer<vtkPolyData>(result.TargetCentered);
-  if (pulledBack &&
-    !mobius::vtk::PullBackToTarget(result.Aligned,
-      result.Correspondence->GetPointData()->GetArray("MappedPoints"), targetSurface, pulledBack))
-  {
-    vtkWarningMacro(<< "The map could not be shown on the target's own mesh (output 3).");
-  }
+  output->SetFieldData(RegistrationFields(result, options));
+  WriteStageOutputs(this, target, options, result, outputVector);
   this->UpdateProgress(1.0);
   return 1;
 }
