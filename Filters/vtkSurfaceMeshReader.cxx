@@ -142,6 +142,142 @@ std::string ReadWithVTK(vtkAlgorithm* reader, vtkPolyData* output)
   }
   return mobius::vtk::PrintableLine(error);
 }
+
+// Why `fileName` cannot be read as a mesh file, found before it is read; empty if it can.
+// A directory opens as an empty stream, and a device such as /dev/zero never ends: the
+// parsers would report nonsense or read forever. Checked before the file is opened:
+// opening a FIFO waits for a writer, possibly forever.
+std::string FileProblem(const std::string& fileName)
+{
+  struct stat information;
+  if (stat(fileName.c_str(), &information) != 0)
+  {
+    return "cannot open the file for reading.";
+  }
+  if (S_ISDIR(information.st_mode))
+  {
+    return "is a directory, not a mesh file.";
+  }
+  if (!S_ISREG(information.st_mode))
+  {
+    return "is not a regular file (a device, pipe or socket); save the mesh to a file first.";
+  }
+  if (!std::ifstream(fileName))
+  {
+    return "cannot open the file for reading.";
+  }
+  if (!vtkSurfaceMeshReader::IsSupportedFile(fileName.c_str()))
+  {
+    return "unknown mesh format '." + LowerCaseExtension(fileName) +
+      "' (supported: .obj, .off, .ply, .stl, .vtp, .vtk).";
+  }
+  return {};
+}
+
+std::string ReadPLY(const std::string& fileName, vtkPolyData* mesh)
+{
+  // VTK's PLY reader looks up the points of each face as it reads: a bad index must be
+  // found before it runs.
+  const std::string error = mobius::vtk::CheckPLYFile(fileName);
+  if (!error.empty())
+  {
+    return error;
+  }
+  vtkNew<vtkPLYReader> ply;
+  ply->SetFileName(fileName.c_str());
+  const std::string readable = mobius::vtk::ReadablePLYText(fileName);
+  if (!readable.empty())
+  {
+    ply->SetInputString(readable);
+    ply->ReadFromInputStringOn();
+  }
+  return ReadWithVTK(ply, mesh);
+}
+
+std::string ReadSTL(vtkSurfaceMeshReader* filter, const std::string& fileName, vtkPolyData* mesh)
+{
+  if (mobius::vtk::IsAsciiSTL(fileName))
+  {
+    // VTK's reader takes text that does not start with exactly "solid" (a byte-order
+    // mark, a blank line, "SOLID") for a binary file, and refuses long solid names.
+    return mobius::vtk::ReadAsciiSTL(fileName, mesh);
+  }
+  long long triangles = 0, trailingBytes = 0;
+  const std::string error = mobius::vtk::CheckSTLFile(fileName, triangles, trailingBytes);
+  if (!error.empty())
+  {
+    return error;
+  }
+  if (trailingBytes > 0)
+  {
+    // VTK's reader would take the bytes after the header's triangles for triangles too.
+    vtkWarningWithObjectMacro(filter, << fileName << ": " << trailingBytes
+                                      << " bytes after the " << triangles
+                                      << " triangles the header counts are ignored.");
+    return mobius::vtk::ReadBinarySTL(fileName, triangles, mesh);
+  }
+  vtkNew<vtkSTLReader> stl;
+  stl->SetFileName(fileName.c_str());
+  return ReadWithVTK(stl, mesh);
+}
+
+std::string ReadVTP(const std::string& fileName, vtkPolyData* mesh)
+{
+  const std::string error = mobius::vtk::CheckVTKFileSizes(fileName, true);
+  if (!error.empty())
+  {
+    return error;
+  }
+  vtkNew<vtkXMLPolyDataReader> vtp;
+  vtp->SetFileName(fileName.c_str());
+  return ReadWithVTK(vtp, mesh);
+}
+
+std::string ReadLegacyVTK(const std::string& fileName, vtkPolyData* mesh)
+{
+  std::string error = mobius::vtk::CheckVTKFileSizes(fileName, false);
+  if (error.empty())
+  {
+    error = mobius::vtk::CheckLegacySections(fileName);
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  vtkNew<vtkPolyDataReader> legacy;
+  legacy->SetFileName(fileName.c_str());
+  return ReadWithVTK(legacy, mesh);
+}
+
+// The mesh in `fileName` (of a supported format); the problem if it cannot be read. OFF and
+// OBJ are parsed here; the others through VTK's readers (or our own where theirs fail), and
+// their cells checked against the points.
+std::string ReadMeshFile(vtkSurfaceMeshReader* filter, const std::string& fileName, vtkPolyData* mesh)
+{
+  const std::string extension = LowerCaseExtension(fileName);
+  std::string error;
+  if (extension == "off" || extension == "obj")
+  {
+    error = extension == "off" ? mobius::vtk::ReadOFF(fileName, mesh)
+                               : mobius::vtk::ReadOBJ(fileName, mesh);
+  }
+  else
+  {
+    error = extension == "ply" ? ReadPLY(fileName, mesh)
+      : extension == "stl"     ? ReadSTL(filter, fileName, mesh)
+      : extension == "vtp"     ? ReadVTP(fileName, mesh)
+                               : ReadLegacyVTK(fileName, mesh);
+    if (error.empty())
+    {
+      error = mobius::vtk::CheckCellPointIds(mesh);
+    }
+  }
+  if (error.empty() && mesh->GetNumberOfPoints() == 0)
+  {
+    error = "the file holds no points";
+  }
+  return error;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -175,121 +311,14 @@ int vtkSurfaceMeshReader::ComputeOutput(
     vtkErrorMacro(<< "No file name given.");
     return 0;
   }
-  struct stat information;
-  if (stat(fileName.c_str(), &information) != 0)
+  const std::string problem = FileProblem(fileName);
+  if (!problem.empty())
   {
-    vtkErrorMacro(<< fileName << ": cannot open the file for reading.");
+    vtkErrorMacro(<< fileName << ": " << problem);
     return 0;
   }
-  // A directory opens as an empty stream, and a device such as /dev/zero never ends: the
-  // parsers below would report nonsense or read forever. Checked before the file is opened:
-  // opening a FIFO waits for a writer, possibly forever.
-  if (S_ISDIR(information.st_mode))
-  {
-    vtkErrorMacro(<< fileName << ": is a directory, not a mesh file.");
-    return 0;
-  }
-  if (!S_ISREG(information.st_mode))
-  {
-    vtkErrorMacro(<< fileName << ": is not a regular file (a device, pipe or socket); "
-                  << "save the mesh to a file first.");
-    return 0;
-  }
-  if (!std::ifstream(fileName))
-  {
-    vtkErrorMacro(<< fileName << ": cannot open the file for reading.");
-    return 0;
-  }
-  const std::string extension = LowerCaseExtension(fileName);
   vtkNew<vtkPolyData> mesh;
-  std::string error;
-  if (extension == "off")
-  {
-    error = mobius::vtk::ReadOFF(fileName, mesh);
-  }
-  else if (extension == "obj")
-  {
-    error = mobius::vtk::ReadOBJ(fileName, mesh);
-  }
-  else
-  {
-    vtkSmartPointer<vtkAlgorithm> reader;
-    bool readHere = false; // read without VTK's reader
-    if (extension == "ply")
-    {
-      // VTK's PLY reader looks up the points of each face as it reads: a bad index must be
-      // found before it runs.
-      error = mobius::vtk::CheckPLYFile(fileName);
-      auto ply = vtkSmartPointer<vtkPLYReader>::New();
-      ply->SetFileName(fileName.c_str());
-      const std::string readable = error.empty() ? mobius::vtk::ReadablePLYText(fileName) : "";
-      if (!readable.empty())
-      {
-        ply->SetInputString(readable);
-        ply->ReadFromInputStringOn();
-      }
-      reader = ply;
-    }
-    else if (extension == "stl" && mobius::vtk::IsAsciiSTL(fileName))
-    {
-      // VTK's reader takes text that does not start with exactly "solid" (a byte-order
-      // mark, a blank line, "SOLID") for a binary file, and refuses long solid names.
-      error = mobius::vtk::ReadAsciiSTL(fileName, mesh);
-      readHere = true;
-    }
-    else if (extension == "stl")
-    {
-      long long triangles = 0, trailingBytes = 0;
-      error = mobius::vtk::CheckSTLFile(fileName, triangles, trailingBytes);
-      if (error.empty() && trailingBytes > 0)
-      {
-        // VTK's reader would take the bytes after the header's triangles for triangles too.
-        vtkWarningMacro(<< fileName << ": " << trailingBytes << " bytes after the "
-                        << triangles << " triangles the header counts are ignored.");
-        error = mobius::vtk::ReadBinarySTL(fileName, triangles, mesh);
-        readHere = true;
-      }
-      auto stl = vtkSmartPointer<vtkSTLReader>::New();
-      stl->SetFileName(fileName.c_str());
-      reader = stl;
-    }
-    else if (extension == "vtp")
-    {
-      error = mobius::vtk::CheckVTKFileSizes(fileName, true);
-      auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-      vtp->SetFileName(fileName.c_str());
-      reader = vtp;
-    }
-    else if (extension == "vtk")
-    {
-      error = mobius::vtk::CheckVTKFileSizes(fileName, false);
-      if (error.empty())
-      {
-        error = mobius::vtk::CheckLegacySections(fileName);
-      }
-      auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
-      legacy->SetFileName(fileName.c_str());
-      reader = legacy;
-    }
-    else
-    {
-      vtkErrorMacro(<< fileName << ": unknown mesh format '." << extension
-                    << "' (supported: .obj, .off, .ply, .stl, .vtp, .vtk).");
-      return 0;
-    }
-    if (error.empty() && !readHere)
-    {
-      error = ReadWithVTK(reader, mesh);
-    }
-    if (error.empty())
-    {
-      error = mobius::vtk::CheckCellPointIds(mesh);
-    }
-  }
-  if (error.empty() && mesh->GetNumberOfPoints() == 0)
-  {
-    error = "the file holds no points";
-  }
+  const std::string error = ReadMeshFile(this, fileName, mesh);
   if (!error.empty())
   {
     // One printable line whatever the file held (a header line quoted from a binary file).
