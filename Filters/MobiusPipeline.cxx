@@ -1,7 +1,7 @@
 #include "MobiusPipeline.h"
 
 #include "MobiusFilterMessages.h"
-#include "LandmarkAlignment.h"
+#include "LandmarkDisagreement.h"
 #include "MobiusInputRows.h"
 #include "MobiusSphericalMapData.h"
 #include "ParallelFor.h"
@@ -147,43 +147,26 @@ void AddLandmarkPoints(const PipelineResult& result, vtkMobiusLandmarkPolyDataAl
   }
 }
 
-// Landmark k as the user gave it: its file and line when read from a file, else its number.
-std::string LandmarkLabel(const mobius::RegistrationParameters& options, size_t k)
+// The candidates' transforms (field data CandidateTransforms of SO3 Register's output), best
+// first.
+std::vector<Eigen::Matrix3d> CandidateTransforms(vtkPolyData* aligned)
 {
-  return mobius::LandmarkName(options, k,
-    options.Landmarks[k].Line > 0 ? mobius::ParameterNaming::CommandLine
-                                  : mobius::ParameterNaming::Filter);
-}
-
-// Row `candidate` of the candidates' transforms (field data CandidateTransforms of SO3
-// Register's output), the identity when there is no such row.
-Eigen::Matrix3d CandidateTransform(vtkPolyData* aligned, int candidate)
-{
-  Eigen::Matrix3d transform = Eigen::Matrix3d::Identity();
+  std::vector<Eigen::Matrix3d> candidates;
   vtkDataArray* transforms = aligned->GetFieldData()->GetArray("CandidateTransforms");
-  if (transforms && transforms->GetNumberOfComponents() == 9 && candidate >= 0 &&
-    candidate < transforms->GetNumberOfTuples())
+  if (!transforms || transforms->GetNumberOfComponents() != 9)
   {
+    return candidates;
+  }
+  for (vtkIdType c = 0; c < transforms->GetNumberOfTuples(); ++c)
+  {
+    Eigen::Matrix3d transform;
     for (int k = 0; k < 9; ++k)
     {
-      transform(k / 3, k % 3) = transforms->GetComponent(candidate, k);
+      transform(k / 3, k % 3) = transforms->GetComponent(c, k);
     }
+    candidates.push_back(transform);
   }
-  return transform;
-}
-
-// "line 3 (112 degrees), line 5 (95 degrees)": the landmarks `which` with their angles.
-std::string AnglesOf(const mobius::RegistrationParameters& options, const std::vector<size_t>& which,
-  const std::vector<double>& angles)
-{
-  std::string list;
-  for (size_t k : which)
-  {
-    list += (list.empty() ? "" : ", ") + LandmarkLabel(options, k) + " (" +
-      std::to_string(static_cast<int>(std::lround(vtkMath::DegreesFromRadians(angles[k])))) +
-      " degrees)";
-  }
-  return list;
+  return candidates;
 }
 
 // The landmarks' points on the aligned source's sphere and on the target's.
@@ -201,36 +184,6 @@ mobius::SphereLandmarks LandmarkSpherePoints(const PipelineResult& result)
   return landmarks;
 }
 
-// The landmarks `transform` leaves more than kLandmarkDisagreementAngle from their targets;
-// `angles` gets every landmark's angle.
-std::vector<size_t> FarLandmarks(const Eigen::Matrix3d& transform,
-  const mobius::SphereLandmarks& landmarks, std::vector<double>& angles)
-{
-  angles = mobius::LandmarkAngles(transform, landmarks);
-  std::vector<size_t> far;
-  for (size_t k = 0; k < angles.size(); ++k)
-  {
-    if (angles[k] > mobius::kLandmarkDisagreementAngle)
-    {
-      far.push_back(k);
-    }
-  }
-  return far;
-}
-
-bool AllNear(const Eigen::Matrix3d& transform, const mobius::SphereLandmarks& landmarks)
-{
-  std::vector<double> angles;
-  return FarLandmarks(transform, landmarks, angles).empty();
-}
-
-// The turn of the aligned source (candidate 0 applied) that candidate `c` starts from:
-// T_c T_0^T.
-Eigen::Matrix3d CandidateStart(vtkPolyData* aligned, int c)
-{
-  return CandidateTransform(aligned, c) * CandidateTransform(aligned, 0).transpose();
-}
-
 // The candidate the final map starts from: the refinement's kept one, 0 for the Möbius map.
 int StartingCandidate(const PipelineResult& result)
 {
@@ -240,75 +193,16 @@ int StartingCandidate(const PipelineResult& result)
   return std::isfinite(kept) ? static_cast<int>(kept) : 0;
 }
 
-const std::string DisagreementDegrees =
-  std::to_string(std::lround(vtkMath::DegreesFromRadians(mobius::kLandmarkDisagreementAngle)));
-
-// What agrees with every landmark where candidate `kept` does not, as the fix: the candidate
-// to keep instead of one asked for, or, from 3 landmarks on (they fix an orthogonal
-// transform), a transform of the kind not searched (a reflection, searching rotations). Only
-// "if the shapes are mirror images": two landmarks swapped fit a reflection so on 4 of 28
-// wrong sets measured (CGAL's meshes against stretched copies), mirror images on 14 of 14.
-std::string DisagreementFix(const PipelineResult& result, const mobius::RegistrationParameters& options,
-  const mobius::SphereLandmarks& landmarks, int kept)
-{
-  vtkDataArray* transforms = result.Aligned->GetFieldData()->GetArray("CandidateTransforms");
-  const int candidates = transforms ? static_cast<int>(transforms->GetNumberOfTuples()) : 1;
-  for (int other = 0; options.Candidate >= 0 && other < candidates; ++other)
-  {
-    if (other != kept && AllNear(CandidateStart(result.Aligned, other), landmarks))
-    {
-      const std::string number = std::to_string(other);
-      return "; Candidate " + std::to_string(kept) + " was asked for, and candidate " + number +
-        " brings every landmark within " + DisagreementDegrees + " degrees: keep it with Candidate = " +
-        number + " (mobius-register --candidate " + number + "), or let the refinement choose";
-    }
-  }
-  if (options.TransformMode == 2 ||
-    landmarks.Source.rows() < static_cast<mobius::Index>(mobius::FittedTransformLandmarks))
-  {
-    return {};
-  }
-  const bool reflection = options.TransformMode == 0; // the kind not searched
-  if (!AllNear(mobius::FitLandmarkTransform(landmarks, reflection ? -1.0 : 1.0), landmarks))
-  {
-    return {};
-  }
-  return std::string("; a ") + (reflection ? "reflection" : "rotation") +
-    " brings every landmark within " + DisagreementDegrees + " degrees: if the shapes are " +
-    (reflection ? "mirror images of each other" : "the same way round") +
-    ", set TransformMode to ROTATIONS_AND_REFLECTIONS to search both kinds";
-}
-
-// The landmarks the final map's starting rotation (LandmarkMode 0) leaves far from their
-// targets on the centered spheres (kLandmarkDisagreementAngle): the map is bent to meet them, and a
-// contradiction (two swapped, a mirror image searched by rotations only, another vertex
-// numbering, a Candidate against them) went through silently. The warning names them and,
-// when there is one, the fix. Empty when they agree.
+// The warning when the landmarks disagree with the final map's starting rotation
+// (mobius::LandmarkDisagreement); empty when they agree.
 std::string LandmarkDisagreement(const PipelineResult& result, const mobius::RegistrationParameters& options)
 {
-  // LandmarkMode 1's Möbius transformation meets the first 3 by construction and moves the
-  // sphere's area so much that the others' angles say nothing (a right fourth landmark of
-  // CGAL's man against its stretched copy: 92 degrees).
-  if (result.SourceLandmarks.empty() || !result.Aligned || !result.TargetCentered ||
-    options.LandmarkMode == static_cast<int>(mobius::LandmarkMode::FitMobius))
+  if (result.SourceLandmarks.empty() || !result.Aligned || !result.TargetCentered)
   {
     return {};
   }
-  const mobius::SphereLandmarks landmarks = LandmarkSpherePoints(result);
-  const int kept = StartingCandidate(result);
-  std::vector<double> angles;
-  const std::vector<size_t> far = FarLandmarks(CandidateStart(result.Aligned, kept), landmarks, angles);
-  if (far.empty())
-  {
-    return {};
-  }
-  return "The landmarks disagree with the map: candidate " + std::to_string(kept) +
-    "'s transform, which the map starts from, leaves " + AnglesOf(options, far, angles) +
-    " more than " + DisagreementDegrees + " degrees from " +
-    (far.size() == 1 ? "its target" : "their targets") +
-    " on the centered spheres, and the map is bent to meet them. Check them (two swapped, the "
-    "other side, another vertex numbering)" +
-    DisagreementFix(result, options, landmarks, kept) + ".";
+  return mobius::LandmarkDisagreement(CandidateTransforms(result.Aligned),
+    StartingCandidate(result), LandmarkSpherePoints(result), options);
 }
 
 // Field data `LandmarkCount` and `LandmarkResidual` of the final map: per landmark, the
@@ -357,7 +251,7 @@ bool CheckDistinctLandmarkPoints(const std::vector<vtkIdType>& points, bool sour
         const mobius::Landmark& landmark = options.Landmarks[l];
         return std::to_string(source ? landmark.Source : landmark.Target);
       };
-      error = name + ": " + LandmarkLabel(options, at->second) + " and " + LandmarkLabel(options, k) +
+      error = name + ": " + mobius::LandmarkLabel(options, at->second) + " and " + mobius::LandmarkLabel(options, k) +
         " name " + (source ? "source" : "target") + " vertices " + vertex(at->second) + " and " +
         vertex(k) + ", which are one point of the surface (duplicates at one position, merged by "
         "the repair): give only one of them";
@@ -638,7 +532,7 @@ bool FindLandmarkPoints(vtkPolyData* mesh, vtkPolyData* map, bool source,
     }
     if (point < 0)
     {
-      error = name + ": " + LandmarkLabel(options, k) + ": " +
+      error = name + ": " + mobius::LandmarkLabel(options, k) + ": " +
         (source ? "source" : "target") + " vertex " + std::to_string(vertex) +
         " is not on the mapped surface: the mesh's repair removed it (a vertex no triangle "
         "uses, or one outside the largest component); choose another vertex";

@@ -90,6 +90,12 @@ std::string LandmarkName(const RegistrationParameters& p, size_t k, ParameterNam
   return "landmark " + Text(k);
 }
 
+std::string LandmarkLabel(const RegistrationParameters& p, size_t k)
+{
+  return LandmarkName(
+    p, k, p.Landmarks[k].Line > 0 ? ParameterNaming::CommandLine : ParameterNaming::Filter);
+}
+
 namespace
 {
 // The first vertex given twice on one side ("source vertex 5 in landmark 0 and landmark 2");

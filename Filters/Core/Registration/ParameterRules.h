@@ -33,6 +33,10 @@ std::string CheckRegistrationParameters(
 /// (Python), "FILE line 7" or "pair 2" (CommandLine).
 std::string LandmarkName(const RegistrationParameters& parameters, size_t k, ParameterNaming naming);
 
+/// Landmark number `k` as the user gave it: its file and line when it was read from a file
+/// ("FILE line 7"), else its number ("landmark 2").
+std::string LandmarkLabel(const RegistrationParameters& parameters, size_t k);
+
 /// The first landmark that names a vertex the meshes do not have (the source has
 /// `sourceVertices` vertices, the target `targetVertices`), e.g. "landmarks[2] names source
 /// vertex 5000, which does not exist: the source mesh has 4000 vertices, numbered from 0 to
