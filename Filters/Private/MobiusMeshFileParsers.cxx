@@ -400,6 +400,121 @@ void StripComment(std::string& line)
     line.erase(hash);
   }
 }
+
+// The next statement of an OBJ file in `line`, without its comments; false at the end of the
+// file. A backslash at the end continues the statement on the next line; a comment ends at
+// the end of its line, whatever its last character (it must not swallow the next `v`).
+bool NextOBJStatement(std::istream& in, std::string& line, long long& lineNumber)
+{
+  if (!std::getline(in, line))
+  {
+    return false;
+  }
+  ++lineNumber;
+  StripComment(line);
+  while (!line.empty() && line.back() == '\\')
+  {
+    line.pop_back();
+    std::string next;
+    if (std::getline(in, next))
+    {
+      ++lineNumber;
+      StripComment(next);
+      line += ' ' + next;
+    }
+  }
+  return true;
+}
+
+// The coordinates of vertex `vertex` from the rest of its `v` statement; the problem if it
+// does not have three finite numbers.
+std::string ReadOBJVertex(
+  std::istringstream& fields, vtkIdType vertex, long long lineNumber, double p[3])
+{
+  std::string text[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    char* end = nullptr;
+    if (!(fields >> text[k]) || (p[k] = std::strtod(text[k].c_str(), &end), *end != '\0'))
+    {
+      std::ostringstream error;
+      error << "vertex " << vertex << " (line " << lineNumber
+            << ") does not have three numeric coordinates";
+      return error.str();
+    }
+    if (!std::isfinite(p[k]))
+    {
+      std::ostringstream error;
+      error << "vertex " << vertex << " (line " << lineNumber
+            << ") has a NaN or infinite coordinate '" << text[k] << "'";
+      return error.str();
+    }
+  }
+  return {};
+}
+
+// The point ids of face `face` from the rest of its `f` statement, `defined` vertices being
+// defined before it; the problem if an index names no vertex or there are fewer than 3.
+std::string ReadOBJFace(std::istringstream& fields, long long face, long long lineNumber,
+  long long defined, std::vector<vtkIdType>& ids)
+{
+  ids.clear();
+  std::string corner;
+  while (fields >> corner)
+  {
+    // The vertex index is the part before the first '/'.
+    errno = 0;
+    char* end = nullptr;
+    const long long index = std::strtoll(corner.c_str(), &end, 10);
+    const bool isNumber = end != corner.c_str() && (*end == '\0' || *end == '/');
+    // Relative indices count back from the last vertex defined so far.
+    const long long absolute = index > 0 ? index - 1 : defined + index;
+    if (!isNumber || errno == ERANGE || index == 0 || absolute < 0)
+    {
+      std::ostringstream error;
+      error << "face " << face << " (line " << lineNumber << ") has an invalid vertex index '"
+            << PrintableLine(corner) << "'"
+            << (isNumber && index == 0 ? " (OBJ numbers vertices from 1)"
+                : isNumber && index < 0
+                ? " (a negative index counts back from the last vertex defined before it)"
+                : "");
+      return error.str();
+    }
+    ids.push_back(static_cast<vtkIdType>(absolute));
+  }
+  if (ids.size() < 3)
+  {
+    std::ostringstream error;
+    error << "face " << face << " (line " << lineNumber << ") has fewer than 3 vertices";
+    return error.str();
+  }
+  return {};
+}
+
+// A face naming a vertex not defined before it: checked once the file is read.
+struct ForwardReference
+{
+  vtkIdType Index;
+  long long Face, Line;
+};
+
+// The first face naming a vertex the file does not define, as the problem; empty if none.
+std::string CheckForwardReferences(
+  const std::vector<ForwardReference>& references, vtkIdType vertices)
+{
+  for (const auto& reference : references)
+  {
+    if (reference.Index >= vertices)
+    {
+      std::ostringstream error;
+      error << "face " << reference.Face << " (line " << reference.Line << ") refers to vertex "
+            << reference.Index + 1 << " (OBJ numbering), but the file has " << vertices
+            << " vertices";
+      return error.str();
+    }
+  }
+  return {};
+}
 }
 
 // Parses the positions and faces of an OBJ file. VTK's OBJ reader is not used: with
@@ -417,31 +532,11 @@ std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
   vtkNew<vtkCellArray> polys;
   std::vector<vtkIdType> ids;
   // Faces may name vertices defined further down: those are checked at the end.
-  struct ForwardReference
-  {
-    vtkIdType Index;
-    long long Face, Line;
-  };
   std::vector<ForwardReference> forwardReferences;
-  std::string line, statement;
+  std::string line, statement, error;
   long long lineNumber = 0, faces = 0;
-  while (std::getline(in, line))
+  while (NextOBJStatement(in, line, lineNumber))
   {
-    ++lineNumber;
-    // A backslash at the end continues the statement on the next line; a comment ends at
-    // the end of its line, whatever its last character (it must not swallow the next `v`).
-    StripComment(line);
-    while (!line.empty() && line.back() == '\\')
-    {
-      line.pop_back();
-      std::string next;
-      if (std::getline(in, next))
-      {
-        ++lineNumber;
-        StripComment(next);
-        line += ' ' + next;
-      }
-    }
     std::istringstream fields(line);
     if (!(fields >> statement))
     {
@@ -449,61 +544,20 @@ std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
     }
     if (statement == "v")
     {
-      const vtkIdType vertex = points->GetNumberOfPoints();
       double p[3];
-      std::string text[3];
-      for (int k = 0; k < 3; ++k)
+      error = ReadOBJVertex(fields, points->GetNumberOfPoints(), lineNumber, p);
+      if (!error.empty())
       {
-        char* end = nullptr;
-        if (!(fields >> text[k]) || (p[k] = std::strtod(text[k].c_str(), &end), *end != '\0'))
-        {
-          std::ostringstream error;
-          error << "vertex " << vertex << " (line " << lineNumber
-                << ") does not have three numeric coordinates";
-          return error.str();
-        }
-        if (!std::isfinite(p[k]))
-        {
-          std::ostringstream error;
-          error << "vertex " << vertex << " (line " << lineNumber
-                << ") has a NaN or infinite coordinate '" << text[k] << "'";
-          return error.str();
-        }
+        return error;
       }
       points->InsertNextPoint(p);
     }
     else if (statement == "f")
     {
-      ids.clear();
-      std::string corner;
-      while (fields >> corner)
+      error = ReadOBJFace(fields, faces, lineNumber, points->GetNumberOfPoints(), ids);
+      if (!error.empty())
       {
-        // The vertex index is the part before the first '/'.
-        errno = 0;
-        char* end = nullptr;
-        const long long index = std::strtoll(corner.c_str(), &end, 10);
-        const bool isNumber = end != corner.c_str() && (*end == '\0' || *end == '/');
-        const long long defined = points->GetNumberOfPoints();
-        // Relative indices count back from the last vertex defined so far.
-        const long long absolute = index > 0 ? index - 1 : defined + index;
-        if (!isNumber || errno == ERANGE || index == 0 || absolute < 0)
-        {
-          std::ostringstream error;
-          error << "face " << faces << " (line " << lineNumber << ") has an invalid vertex index '"
-                << PrintableLine(corner) << "'"
-                << (isNumber && index == 0 ? " (OBJ numbers vertices from 1)"
-                    : isNumber && index < 0
-                    ? " (a negative index counts back from the last vertex defined before it)"
-                    : "");
-          return error.str();
-        }
-        ids.push_back(static_cast<vtkIdType>(absolute));
-      }
-      if (ids.size() < 3)
-      {
-        std::ostringstream error;
-        error << "face " << faces << " (line " << lineNumber << ") has fewer than 3 vertices";
-        return error.str();
+        return error;
       }
       const vtkIdType largest = *std::max_element(ids.begin(), ids.end());
       if (largest >= points->GetNumberOfPoints())
@@ -518,16 +572,10 @@ std::string ReadOBJ(const std::string& fileName, vtkPolyData* output)
   {
     return "reading the file failed";
   }
-  for (const auto& reference : forwardReferences)
+  error = CheckForwardReferences(forwardReferences, points->GetNumberOfPoints());
+  if (!error.empty())
   {
-    if (reference.Index >= points->GetNumberOfPoints())
-    {
-      std::ostringstream error;
-      error << "face " << reference.Face << " (line " << reference.Line << ") refers to vertex "
-            << reference.Index + 1 << " (OBJ numbering), but the file has "
-            << points->GetNumberOfPoints() << " vertices";
-      return error.str();
-    }
+    return error;
   }
   output->SetPoints(points);
   output->SetPolys(polys);
