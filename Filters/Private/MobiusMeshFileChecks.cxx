@@ -311,30 +311,21 @@ std::string CheckPLYLayout(const std::vector<Element>& elements)
 }
 }
 
-std::string CheckPLYFile(const std::string& fileName)
+namespace
 {
-  std::ifstream in(fileName, std::ios::binary);
-  Encoding encoding = Encoding::Ascii;
-  std::vector<Element> elements;
-  std::string error = ReadHeader(in, encoding, elements);
-  if (!error.empty())
-  {
-    return error;
-  }
-  error = CheckPLYLayout(elements);
-  if (!error.empty())
-  {
-    return error;
-  }
-  long long numberOfVertices = -1;
+// Every vertex element with x, y and z, and a face element's index list; the number of
+// vertices (of the last vertex element). VTK 9.2's PLY reader crashes (a segmentation fault
+// in vtkPLY::find_element) on a vertex element without x, y or z, and on a file without a
+// vertex element (found by the fuzzer, Testing/Fuzz/Regressions/ply-vertex-without-y,
+// ply-no-vertex-element).
+std::string CheckPLYElements(const std::vector<Element>& elements, long long& numberOfVertices)
+{
+  numberOfVertices = -1;
   for (const auto& element : elements)
   {
     if (element.Name == "vertex")
     {
       numberOfVertices = element.Count;
-      // VTK 9.2's PLY reader crashes (a segmentation fault in vtkPLY::find_element) on a vertex
-      // element without x, y or z, and on a file without a vertex element (found by the
-      // fuzzer, Testing/Fuzz/Regressions/ply-vertex-without-y, ply-no-vertex-element).
       for (const char* coordinate : { "x", "y", "z" })
       {
         const bool found = std::any_of(element.Properties.begin(), element.Properties.end(),
@@ -365,12 +356,101 @@ std::string CheckPLYFile(const std::string& fileName)
       return "the face element has no list property 'vertex_indices'";
     }
   }
+  return {};
+}
+
+// The largest vertex index the faces name so far, and the face that names it.
+struct LargestFaceIndex
+{
+  long long Index = -1;
+  long long Face = -1;
+};
+
+// Vertex index `index` of face `face`: of an integer type and naming a vertex.
+std::string CheckFaceIndex(const Property& property, long long face, long long index,
+  long long numberOfVertices, LargestFaceIndex& largest)
+{
+  if (!property.ValueType.IsInteger)
+  {
+    return "the face element stores its vertex indices as floating-point numbers; "
+           "PLY vertex indices must be of an integer type (int, uint, ...)";
+  }
+  if (index < 0 || (numberOfVertices >= 0 && index >= numberOfVertices))
+  {
+    std::ostringstream message;
+    message << "face " << face << " refers to vertex " << index << ", but the file has "
+            << std::max(0LL, numberOfVertices) << " vertices (numbered from 0)";
+    return message.str();
+  }
+  if (index > largest.Index)
+  {
+    largest.Index = index;
+    largest.Face = face;
+  }
+  return {};
+}
+
+// The values of `property` of item `item` of `element`, read and checked: a list's length, a
+// vertex's coordinates finite, a face's vertex indices.
+std::string CheckPLYProperty(ValueReader& reader, const Element& element, long long item,
+  const Property& property, long long numberOfVertices, LargestFaceIndex& largest)
+{
+  const bool isVertex = element.Name == "vertex", isFace = element.Name == "face";
+  std::ostringstream where;
+  where << element.Name << " " << item << " (property '" << property.Name << "')";
+  double real = 0;
+  long long count = 1;
+  if (property.IsList && !reader.Read(property.CountType, real, count))
+  {
+    return where.str() + (reader.Malformed ? " is malformed" : " is missing");
+  }
+  const bool isFaceIndices = isFace && property.IsList &&
+    (property.Name == "vertex_indices" || property.Name == "vertex_index");
+  if (isFaceIndices && count < 3)
+  {
+    std::ostringstream message;
+    message << "face " << item << " has " << count << " vertices; a face needs at least 3";
+    return message.str();
+  }
+  if (count < 0)
+  {
+    return where.str() + " has a negative list length";
+  }
+  for (long long k = 0; k < count; ++k)
+  {
+    long long integer = 0;
+    if (!reader.Read(property.ValueType, real, integer))
+    {
+      return where.str() + (reader.Malformed ? " is malformed" : " is missing");
+    }
+    if (isVertex && !property.IsList &&
+      (property.Name == "x" || property.Name == "y" || property.Name == "z") &&
+      !std::isfinite(real))
+    {
+      std::ostringstream message;
+      message << "vertex " << item << " has a NaN or infinite coordinate " << property.Name;
+      return message.str();
+    }
+    const std::string error = isFaceIndices
+      ? CheckFaceIndex(property, item, integer, numberOfVertices, largest)
+      : std::string();
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
+  return {};
+}
+
+// Every item of every element, read and checked after the header.
+std::string CheckPLYData(std::istream& in, Encoding encoding,
+  const std::vector<Element>& elements, long long numberOfVertices)
+{
   // The faces may come before the vertices: the largest index is checked again at the end.
-  long long largestIndex = -1, largestIndexFace = -1;
+  LargestFaceIndex largest;
   ValueReader reader(in, encoding);
   for (const auto& element : elements)
   {
-    const bool isVertex = element.Name == "vertex", isFace = element.Name == "face";
     for (long long item = 0; item < element.Count; ++item)
     {
       if (!reader.BeginItem())
@@ -382,75 +462,43 @@ std::string CheckPLYFile(const std::string& fileName)
       }
       for (const auto& property : element.Properties)
       {
-        std::ostringstream where;
-        where << element.Name << " " << item << " (property '" << property.Name << "')";
-        double real = 0;
-        long long count = 1;
-        if (property.IsList && !reader.Read(property.CountType, real, count))
+        const std::string error =
+          CheckPLYProperty(reader, element, item, property, numberOfVertices, largest);
+        if (!error.empty())
         {
-          return where.str() + (reader.Malformed ? " is malformed" : " is missing");
-        }
-        const bool isFaceIndices = isFace && property.IsList &&
-          (property.Name == "vertex_indices" || property.Name == "vertex_index");
-        if (isFaceIndices && count < 3)
-        {
-          std::ostringstream message;
-          message << "face " << item << " has " << count << " vertices; a face needs at least 3";
-          return message.str();
-        }
-        if (count < 0)
-        {
-          return where.str() + " has a negative list length";
-        }
-        for (long long k = 0; k < count; ++k)
-        {
-          long long integer = 0;
-          if (!reader.Read(property.ValueType, real, integer))
-          {
-            return where.str() + (reader.Malformed ? " is malformed" : " is missing");
-          }
-          if (isVertex && !property.IsList &&
-            (property.Name == "x" || property.Name == "y" || property.Name == "z") &&
-            !std::isfinite(real))
-          {
-            std::ostringstream message;
-            message << "vertex " << item << " has a NaN or infinite coordinate " << property.Name;
-            return message.str();
-          }
-          if (isFaceIndices)
-          {
-            if (!property.ValueType.IsInteger)
-            {
-              return "the face element stores its vertex indices as floating-point numbers; "
-                     "PLY vertex indices must be of an integer type (int, uint, ...)";
-            }
-            if (integer < 0 ||
-              (numberOfVertices >= 0 && integer >= numberOfVertices))
-            {
-              std::ostringstream message;
-              message << "face " << item << " refers to vertex " << integer << ", but the file has "
-                      << std::max(0LL, numberOfVertices) << " vertices (numbered from 0)";
-              return message.str();
-            }
-            if (integer > largestIndex)
-            {
-              largestIndex = integer;
-              largestIndexFace = item;
-            }
-          }
+          return error;
         }
       }
     }
   }
-  if (largestIndex >= std::max(0LL, numberOfVertices))
+  if (largest.Index >= std::max(0LL, numberOfVertices))
   {
     std::ostringstream message;
-    message << "face " << largestIndexFace << " refers to vertex " << largestIndex
+    message << "face " << largest.Face << " refers to vertex " << largest.Index
             << ", but the file has " << std::max(0LL, numberOfVertices)
             << " vertices (numbered from 0)";
     return message.str();
   }
   return {};
+}
+}
+
+std::string CheckPLYFile(const std::string& fileName)
+{
+  std::ifstream in(fileName, std::ios::binary);
+  Encoding encoding = Encoding::Ascii;
+  std::vector<Element> elements;
+  long long numberOfVertices = -1;
+  std::string error = ReadHeader(in, encoding, elements);
+  if (error.empty())
+  {
+    error = CheckPLYLayout(elements);
+  }
+  if (error.empty())
+  {
+    error = CheckPLYElements(elements, numberOfVertices);
+  }
+  return error.empty() ? CheckPLYData(in, encoding, elements, numberOfVertices) : error;
 }
 
 namespace
