@@ -683,71 +683,89 @@ std::string TooLarge(const std::string& what, long long claimed, long long value
 }
 }
 
-std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
+namespace
 {
-  const long long size = FileSize(fileName);
-  if (size < 0)
+// The problem with one line of a legacy VTK file, if it is a section header claiming more
+// values than the file's `size` bytes can hold. Every value takes at least one byte (a
+// binary char; two in ASCII).
+std::string CheckLegacySizeLine(const std::string& line, long long size)
+{
+  std::istringstream fields(line);
+  std::string keyword;
+  fields >> keyword;
+  long long first = -1, second = -1;
+  if (keyword == "POINTS")
   {
-    return "cannot read the file";
-  }
-  std::ifstream in(fileName, std::ios::binary);
-  if (!xml)
-  {
-    // Every value takes at least one byte (a binary char; two in ASCII). Binary sections
-    // may hold newlines too: a line that does not parse as a section header is skipped.
-    std::string line;
-    while (std::getline(in, line))
+    if ((fields >> first) && (first < 0 || first > size / 3))
     {
-      std::istringstream fields(line);
-      std::string keyword;
-      fields >> keyword;
-      long long first = -1, second = -1;
-      if (keyword == "POINTS")
-      {
-        if ((fields >> first) && (first < 0 || first > size / 3))
-        {
-          return TooLarge("points", first, first < 0 || first > LLONG_MAX / 3 ? first : 3 * first, size);
-        }
-      }
-      else if (keyword == "POLYGONS" || keyword == "VERTICES" || keyword == "LINES" ||
-        keyword == "TRIANGLE_STRIPS")
-      {
-        if ((fields >> first >> second) && (first < 0 || second < 0 || first > size || second > size))
-        {
-          std::string cells = keyword;
-          std::transform(cells.begin(), cells.end(), cells.begin(),
-            [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-          return TooLarge(cells, first, std::max(first, second), size);
-        }
-      }
-      else if (IsFieldArrayHeader(line, first, second))
-      {
-        // "name components tuples type" in a FIELD block: components x tuples values.
-        if (first < 0 || second < 0 || (first > 0 && second > size / first))
-        {
-          std::ostringstream message;
-          message << "the field array line '" << line << "' claims " << first << " x " << second
-                  << " values, more than a file of " << size << " bytes can hold";
-          return message.str();
-        }
-      }
-      else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
-      {
-        if ((fields >> first) && (first < 0 || first > size))
-        {
-          return TooLarge(keyword == "POINT_DATA" ? "point data tuples" : "cell data tuples",
-            first, first, size);
-        }
-      }
+      return TooLarge("points", first, first < 0 || first > LLONG_MAX / 3 ? first : 3 * first, size);
     }
-    return {};
   }
-  // XML: the Piece attributes come before the data; read the start of the file only.
-  std::string head(static_cast<size_t>(std::min<long long>(size, 1 << 20)), '\0');
-  in.read(&head[0], static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
-  // zlib, the best of VTK's compressors, shrinks data at most about 1000-fold.
-  const long long ratio = head.find("compressor=") != std::string::npos ? 1100 : 1;
+  else if (keyword == "POLYGONS" || keyword == "VERTICES" || keyword == "LINES" ||
+    keyword == "TRIANGLE_STRIPS")
+  {
+    if ((fields >> first >> second) && (first < 0 || second < 0 || first > size || second > size))
+    {
+      std::string cells = keyword;
+      std::transform(cells.begin(), cells.end(), cells.begin(),
+        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      return TooLarge(cells, first, std::max(first, second), size);
+    }
+  }
+  else if (IsFieldArrayHeader(line, first, second))
+  {
+    // "name components tuples type" in a FIELD block: components x tuples values.
+    if (first < 0 || second < 0 || (first > 0 && second > size / first))
+    {
+      std::ostringstream message;
+      message << "the field array line '" << line << "' claims " << first << " x " << second
+              << " values, more than a file of " << size << " bytes can hold";
+      return message.str();
+    }
+  }
+  else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
+  {
+    if ((fields >> first) && (first < 0 || first > size))
+    {
+      return TooLarge(keyword == "POINT_DATA" ? "point data tuples" : "cell data tuples",
+        first, first, size);
+    }
+  }
+  return {};
+}
+
+// Binary sections may hold newlines too: a line that does not parse as a section header is
+// skipped.
+std::string CheckLegacySizes(std::istream& in, long long size)
+{
+  std::string line;
+  while (std::getline(in, line))
+  {
+    const std::string problem = CheckLegacySizeLine(line, size);
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  return {};
+}
+
+// The number after the attribute starting at `at` in `head` into `claimed`; false when
+// there is none (errno tells an overflow).
+bool ClaimedNumber(const std::string& head, size_t at, const char* attribute, long long& claimed)
+{
+  const char* start = head.c_str() + at + std::strlen(attribute);
+  char* end = nullptr;
+  errno = 0;
+  claimed = std::strtoll(start, &end, 10);
+  return end != start;
+}
+
+// The Piece's counts of points and cells against the file's `size` (times `ratio` when
+// compressed); the largest count, at least 1, in `largestCount`.
+std::string CheckXMLPieceCounts(
+  const std::string& head, long long size, long long ratio, long long& largestCount)
+{
   const struct
   {
     const char* Attribute;
@@ -756,17 +774,14 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
   } counts[] = { { "NumberOfPoints=\"", "points", 3 }, { "NumberOfVerts=\"", "vertex cells", 1 },
     { "NumberOfLines=\"", "line cells", 1 }, { "NumberOfStrips=\"", "strips", 1 },
     { "NumberOfPolys=\"", "polygons", 1 } };
-  long long largestCount = 1;
+  largestCount = 1;
   for (const auto& count : counts)
   {
     for (auto at = head.find(count.Attribute); at != std::string::npos;
          at = head.find(count.Attribute, at + 1))
     {
-      const char* start = head.c_str() + at + std::strlen(count.Attribute);
-      char* end = nullptr;
-      errno = 0;
-      const long long claimed = std::strtoll(start, &end, 10);
-      if (end == start)
+      long long claimed = 0;
+      if (!ClaimedNumber(head, at, count.Attribute, claimed))
       {
         continue;
       }
@@ -780,18 +795,21 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
       largestCount = std::max(largestCount, claimed);
     }
   }
-  // A data array holds components x tuples values, the tuples being points, cells or (for
-  // field data) NumberOfTuples.
+  return {};
+}
+
+// A data array holds components x tuples values, the tuples being points, cells or (for
+// field data) NumberOfTuples.
+std::string CheckXMLArrayCounts(
+  const std::string& head, long long size, long long ratio, long long largestCount)
+{
   for (const char* attribute : { "NumberOfComponents=\"", "NumberOfTuples=\"" })
   {
     const bool components = attribute[8] == 'C';
     for (auto at = head.find(attribute); at != std::string::npos; at = head.find(attribute, at + 1))
     {
-      const char* start = head.c_str() + at + std::strlen(attribute);
-      char* end = nullptr;
-      errno = 0;
-      const long long claimed = std::strtoll(start, &end, 10);
-      if (end == start)
+      long long claimed = 0;
+      if (!ClaimedNumber(head, at, attribute, claimed))
       {
         continue;
       }
@@ -807,6 +825,31 @@ std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
     }
   }
   return {};
+}
+
+// XML: the Piece attributes come before the data; the start of the file is read only.
+std::string CheckXMLSizes(std::istream& in, long long size)
+{
+  std::string head(static_cast<size_t>(std::min<long long>(size, 1 << 20)), '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(std::max<std::streamsize>(0, in.gcount())));
+  // zlib, the best of VTK's compressors, shrinks data at most about 1000-fold.
+  const long long ratio = head.find("compressor=") != std::string::npos ? 1100 : 1;
+  long long largestCount = 1;
+  const std::string problem = CheckXMLPieceCounts(head, size, ratio, largestCount);
+  return problem.empty() ? CheckXMLArrayCounts(head, size, ratio, largestCount) : problem;
+}
+}
+
+std::string CheckVTKFileSizes(const std::string& fileName, bool xml)
+{
+  const long long size = FileSize(fileName);
+  if (size < 0)
+  {
+    return "cannot read the file";
+  }
+  std::ifstream in(fileName, std::ios::binary);
+  return xml ? CheckXMLSizes(in, size) : CheckLegacySizes(in, size);
 }
 
 namespace
