@@ -483,6 +483,12 @@ std::vector<Option> RegistrationOptions()
     Option("--candidates K", "correlation peaks to report, {range} (default {default})",
       &PipelineOptions::NumberOfCandidates)
       .Allows(mobius::CandidateCountRange),
+    Option("--candidate-separation DEG",
+      "smallest angle between two candidates, {range} degrees\n"
+      "(default {default}): peaks nearer a better one are not\n"
+      "reported; lower it to see near neighbours of a peak",
+      &PipelineOptions::CandidateSeparation)
+      .Allows(mobius::CandidateSeparationRange),
     Option("--candidate K",
       "keep the refinement's map from candidate K (0..K-1 of\n"
       "--candidates; 0 the best peak) instead of the one it\n"

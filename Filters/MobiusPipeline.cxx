@@ -382,6 +382,7 @@ bool AlignMaps(const mobius::RegistrationParameters& options, int threads,
   registration->SetSmoothingTime(options.SmoothingTime);
   registration->SetTransformMode(options.TransformMode);
   registration->SetNumberOfCandidates(options.NumberOfCandidates);
+  registration->SetCandidateSeparation(options.CandidateSeparation);
   registration->SetNumberOfThreads(threads);
   registration->SetLandmarkMode(options.LandmarkMode);
   AddLandmarkPoints(result, registration);

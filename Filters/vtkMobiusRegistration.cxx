@@ -54,6 +54,7 @@ mobius::RegistrationParameters ParametersOf(vtkMobiusRegistration* filter)
   options.SmoothingTime = filter->GetSmoothingTime();
   options.TransformMode = filter->GetTransformMode();
   options.NumberOfCandidates = filter->GetNumberOfCandidates();
+  options.CandidateSeparation = filter->GetCandidateSeparation();
   options.Refine = filter->GetRefine();
   options.BasisSize = filter->GetBasisSize();
   options.GeometricPolish = filter->GetGeometricPolish();
@@ -200,6 +201,7 @@ vtkMobiusRegistration::vtkMobiusRegistration()
   this->SmoothingTime = defaults.SmoothingTime;
   this->TransformMode = defaults.TransformMode;
   this->NumberOfCandidates = defaults.NumberOfCandidates;
+  this->CandidateSeparation = defaults.CandidateSeparation;
   this->Refine = defaults.Refine;
   this->BasisSize = defaults.BasisSize;
   this->GeometricPolish = defaults.GeometricPolish;
@@ -317,6 +319,7 @@ void vtkMobiusRegistration::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothingTime: " << this->SmoothingTime << "\n";
   os << indent << "TransformMode: " << this->TransformMode << "\n";
   os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "CandidateSeparation: " << this->CandidateSeparation << "\n";
   os << indent << "Refine: " << this->Refine << "\n";
   os << indent << "BasisSize: " << this->BasisSize << "\n";
   os << indent << "GeometricPolish: " << this->GeometricPolish << "\n";

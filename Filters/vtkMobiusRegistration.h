@@ -139,7 +139,8 @@ public:
   ///@{
   /**
    * Rotational alignment (vtkSO3Register): grid size (even, >= 8), smoothing time,
-   * transforms searched (0 rotations, 1 reflections, 2 both), correlation peaks.
+   * transforms searched (0 rotations, 1 reflections, 2 both), correlation peaks, and the
+   * smallest angle (degrees, 0-180) between two of them (vtkSO3Register::CandidateSeparation).
    */
   vtkSetMacro(Resolution, int);
   vtkGetMacro(Resolution, int);
@@ -149,6 +150,8 @@ public:
   vtkGetMacro(TransformMode, int);
   vtkSetMacro(NumberOfCandidates, int);
   vtkGetMacro(NumberOfCandidates, int);
+  vtkSetMacro(CandidateSeparation, double);
+  vtkGetMacro(CandidateSeparation, double);
   ///@}
 
   ///@{
@@ -240,6 +243,7 @@ protected:
   double SmoothingTime;
   int TransformMode;
   int NumberOfCandidates;
+  double CandidateSeparation;
   bool Refine;
   int BasisSize;
   bool GeometricPolish;

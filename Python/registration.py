@@ -47,6 +47,8 @@ def _default_options():
         "smoothing": registration.GetSmoothingTime(),  # heat-kernel smoothing time of the scale factors
         "transform": transforms[registration.GetTransformMode()],  # rotation | reflection | both
         "candidates": registration.GetNumberOfCandidates(),  # correlation peaks the refinement starts from
+        # smallest angle (degrees) between two candidates (mobius-register --candidate-separation)
+        "candidate_separation": registration.GetCandidateSeparation(),
         # the refinement's candidate to keep (mobius-register --candidate); None: it chooses
         "candidate": None if candidate < 0 else candidate,
         "iterations": conformal.GetMaximumNumberOfIterations(),  # maximum conformal flow steps
@@ -330,6 +332,7 @@ def _registration_filter(options, errors):
     registration.SetSmoothingTime(float(options["smoothing"]))
     registration.SetTransformMode(_TRANSFORM_MODES[options["transform"]])
     registration.SetNumberOfCandidates(int(options["candidates"]))
+    registration.SetCandidateSeparation(float(options["candidate_separation"]))
     registration.SetRefine(bool(options["refine"]))
     registration.SetBasisSize(int(options["basis_size"]))
     registration.SetGeometricPolish(bool(options["polish"]))
@@ -369,6 +372,7 @@ def register(source, target, **options):
     the map the other way too and average each point with its inverse; False as --one-direction),
     resolution=256,
     smoothing=0.0005, transform="rotation" ("reflection", "both"), candidates=4,
+    candidate_separation=60 (degrees, 0 to 180, between two candidates),
     candidate=None (keep this candidate's refined map, 0..candidates-1, as --candidate, for a
     map that came out turned while a warning named a near-equal runner-up), iterations=100, tolerance=1e-4,
     repair=True (False: refuse a mesh that is no closed genus-0 surface, as --no-repair),
@@ -398,7 +402,7 @@ def register(source, target, **options):
         _require_int(name, options[name])
     if options["candidate"] is not None:
         _require_int("candidate", options["candidate"])
-    for name in ("tolerance", "smoothing"):
+    for name in ("tolerance", "smoothing", "candidate_separation"):
         _require_real(name, options[name])
 
     errors = _Errors()

@@ -75,6 +75,7 @@ python_expected = {
     "both_directions": refinement.GetBothDirections(),
     "resolution": registration.GetResolution(), "smoothing": registration.GetSmoothingTime(),
     "candidates": registration.GetNumberOfCandidates(),
+    "candidate_separation": registration.GetCandidateSeparation(),
     "iterations": conformal.GetMaximumNumberOfIterations(),
     "tolerance": conformal.GetConvergenceTolerance(), "fill_holes": conformal.GetFillHoles(),
     "repair": conformal.GetRepair(),
@@ -95,6 +96,7 @@ cli_expected = {
     "--iterations": python_expected["iterations"], "--tolerance": python_expected["tolerance"],
     "--resolution": python_expected["resolution"], "--smoothing": python_expected["smoothing"],
     "--candidates": python_expected["candidates"], "--basis-size": python_expected["basis_size"],
+    "--candidate-separation": python_expected["candidate_separation"],
     "--threads": python_expected["threads"],
     "--degree": filters.vtkMobiusCenter().GetDegree(),
 }
@@ -118,6 +120,8 @@ from mobiusregistration import register  # noqa: E402
 refused = 0
 for option, keyword, prop, value in (("--basis-size", "basis_size", "BasisSize", 1),
                                      ("--candidates", "candidates", "NumberOfCandidates", 65),
+                                     ("--candidate-separation", "candidate_separation",
+                                      "CandidateSeparation", 200),
                                      ("--resolution", "resolution", "Resolution", 6),
                                      ("--threads", "threads", "NumberOfThreads", 1025),
                                      ("--iterations", "iterations", "MaximumNumberOfIterations", 0),

@@ -105,6 +105,19 @@ print(f"Möbius map: mean error {mobius_error:.4f} of sqrt(area)")
 assert "RefinementOrthogonalityResidual" not in mobius.quality
 assert mobius_error < 0.25 and refined_error < mobius_error
 
+# candidate_separation reaches the rotation search: no two candidates nearer than it (at 180
+# degrees only a peak and its half-turn remain, where the default keeps 4).
+def candidate_angles(registration):
+    transforms = np.asarray(registration.fields["CandidateTransforms"]).reshape(-1, 3, 3)
+    cosines = [(np.trace(a.T @ b) - 1) / 2 for k, a in enumerate(transforms) for b in transforms[k + 1:]]
+    return len(transforms), np.degrees(np.arccos(np.clip(cosines, -1, 1)))
+for separation, most in ((60, 4), (180, 2)):
+    count, angles = candidate_angles(register(hand, hand, resolution=64, refine=False,
+                                              candidate_separation=separation))
+    print(f"candidate_separation={separation}: {count} candidates, nearest {angles.min():.1f} degrees apart")
+    assert 2 <= count <= most and angles.min() >= separation - 1e-6, (separation, count, angles)
+    assert separation != 60 or count == 4
+
 # A mesh with defects is repaired, with a warning naming the repair, and the result has a
 # row per vertex as given; with repair=False the filter's message, as a Python exception.
 open_faces = faces[1:]  # one triangle removed: a hole

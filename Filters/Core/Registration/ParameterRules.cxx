@@ -152,6 +152,8 @@ const std::vector<Rule>& Rules()
       },
       [](const RegistrationParameters& p) { return Text(p.TransformMode); } },
     IntegerRule(CandidatesNames, &RegistrationParameters::NumberOfCandidates, CandidateCountRange),
+    NumberRule({ "CandidateSeparation", "candidate_separation", "--candidate-separation" },
+      &RegistrationParameters::CandidateSeparation, CandidateSeparationRange),
     // The candidate kept must be one of those found (-1: the refinement chooses).
     { { "Candidate", "candidate", "--candidate" },
       [](const RegistrationParameters& p) {

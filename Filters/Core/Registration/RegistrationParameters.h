@@ -44,6 +44,8 @@ inline constexpr IntegerRange BasisSizeRange{ 2, 500 };
 /// Correlation peaks refined: each costs a refinement, and 64 is far beyond a useful count.
 inline constexpr IntegerRange CandidateCountRange{ 1, 64 };
 inline constexpr IntegerRange CandidateRange{ -1, CandidateCountRange.Maximum - 1 }; ///< -1: the refinement chooses
+/// Degrees between two candidates: two rotations are never more than 180 degrees apart.
+inline constexpr NumberRange CandidateSeparationRange{ 0.0, 180.0 };
 inline constexpr IntegerRange ThreadCountRange{ 0, 1024 };
 /// An infinite or huge smoothing time wipes out the signals (exp(-l(l+1) t) leaves nothing
 /// of degree 1 and up well before t = 1).
