@@ -41,11 +41,10 @@ void vtkCenteredSphericalMap::SetMeshName(const char* name)
 int vtkCenteredSphericalMap::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  if (!this->GetInputAndOutput(inputVector, outputVector, input, output))
   {
-    vtkErrorMacro(<< "Missing input or output polydata.");
     return 0;
   }
   // The job's parameters: the ones of this filter, the rest at their defaults.

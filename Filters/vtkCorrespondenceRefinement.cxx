@@ -84,31 +84,25 @@ std::string ExtractMapInput(vtkPolyData* input, int basisSize, MapInput& map)
   return error;
 }
 
-// The transforms to start from, as rotations of the already aligned source: the aligned
-// points are T_best x, so candidate T_j is reached by T_j T_best^-1 (T orthogonal).
+// The transforms to start from, as rotations of the already aligned source (field data
+// Rotation, the best transform, and CandidateTransforms; mobius::CandidateStarts).
 std::vector<mobius::RotationMatrix> CandidateStarts(vtkPolyData* aligned, bool searchCandidates)
 {
-  std::vector<mobius::RotationMatrix> starts{ mobius::RotationMatrix::Identity() };
   vtkDataArray* best = aligned->GetFieldData()->GetArray("Rotation");
   vtkDataArray* candidates = aligned->GetFieldData()->GetArray("CandidateTransforms");
   if (!searchCandidates || !best || !candidates || best->GetNumberOfComponents() != 9 ||
     candidates->GetNumberOfComponents() != 9)
   {
-    return starts;
+    return { mobius::RotationMatrix::Identity() };
   }
   mobius::RotationMatrix bestTransform;
   best->GetTuple(0, bestTransform.data());
+  std::vector<mobius::RotationMatrix> transforms(candidates->GetNumberOfTuples());
   for (vtkIdType c = 0; c < candidates->GetNumberOfTuples(); ++c)
   {
-    mobius::RotationMatrix transform;
-    candidates->GetTuple(c, transform.data());
-    if (!transform.allFinite() || (transform - bestTransform).norm() < 1e-9)
-    {
-      continue; // the best one is already first
-    }
-    starts.emplace_back(transform * bestTransform.transpose());
+    candidates->GetTuple(c, transforms[c].data());
   }
-  return starts;
+  return mobius::CandidateStarts(bestTransform, transforms);
 }
 
 // The spectral surfaces of both maps. A basis stored on an input (vtkLaplaceBeltramiBasis)
@@ -353,18 +347,53 @@ std::string LandmarkVertices(const std::vector<std::pair<vtkIdType, vtkIdType>>&
   return {};
 }
 
-// Empty when `candidate` (-1: none given) is one of the registration's `count` candidates,
-// else the error.
-std::string CheckCandidate(int candidate, size_t count)
+// What the refinement starts from: both maps and their spectral surfaces (Stored: made from
+// a basis stored on the input), the target's point locator, the landmarks as vertex pairs,
+// the candidates' start rotations, and the seconds the surfaces took.
+struct RefinementStart
 {
-  if (candidate < static_cast<int>(count))
+  MapInput Maps[2];
+  mobius::SpectralSurface Surfaces[2];
+  bool Stored[2] = { false, false };
+  mobius::SphericalPointLocator Locator;
+  std::vector<std::pair<mobius::Index, mobius::Index>> Landmarks;
+  std::vector<mobius::RotationMatrix> Starts;
+  double SurfaceSeconds = 0;
+};
+
+// Everything the refinement starts from; false with the error (a sentence), or with none
+// when the filter was aborted.
+bool PrepareRefinement(vtkCorrespondenceRefinement* filter, vtkPolyData* inputs[2],
+  const std::vector<std::pair<vtkIdType, vtkIdType>>& landmarks, int threads,
+  RefinementStart& start, std::string& error)
+{
+  const auto surfacesStart = std::chrono::steady_clock::now();
+  error = PrepareInputs(filter, inputs, threads, start.Maps, start.Surfaces, start.Stored);
+  if (!error.empty())
   {
-    return std::string();
+    return false;
   }
-  std::ostringstream message;
-  message << "Candidate " << candidate << " does not exist: the registration has " << count
-          << " candidate" << (count == 1 ? "" : "s") << " (0.." << count - 1 << ").";
-  return message.str();
+  const std::chrono::duration<double> surfaceTime =
+    std::chrono::steady_clock::now() - surfacesStart;
+  start.SurfaceSeconds = surfaceTime.count();
+  filter->UpdateProgress(0.5);
+  if (filter->GetAbortExecute())
+  {
+    return false;
+  }
+  if (!start.Locator.Build(start.Maps[1].Sphere, start.Maps[1].Triangles, error))
+  {
+    error = InputError(1, error);
+    return false;
+  }
+  error = LandmarkVertices(landmarks, start.Surfaces, start.Landmarks);
+  if (!error.empty())
+  {
+    return false;
+  }
+  start.Starts = CandidateStarts(inputs[0], filter->GetSearchCandidates());
+  error = mobius::CheckCandidate(filter->GetCandidate(), start.Starts.size());
+  return error.empty();
 }
 
 // The point array MapStretch (mobius::EdgeStretch of the mapped points) and its
@@ -521,65 +550,32 @@ int vtkCorrespondenceRefinement::ComputeOutput(
     vtkErrorMacro(<< "Both a Source (port 0) and a Target (port 1) spherical map are required.");
     return 0;
   }
-  if (this->StartBasisSize > this->BasisSize)
-  {
-    vtkErrorMacro(<< "StartBasisSize (" << this->StartBasisSize
-                  << ") must not exceed BasisSize (" << this->BasisSize << ").");
-    return 0;
-  }
-  MapInput maps[2];
-  const auto basisStart = std::chrono::steady_clock::now();
+  std::string error = mobius::CheckBasisSizes(this->StartBasisSize, this->BasisSize);
   const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
-  mobius::SpectralSurface surfaces[2];
-  bool stored[2] = { false, false };
-  std::string error = PrepareInputs(this, inputs, threads, maps, surfaces, stored);
-  if (!error.empty())
+  RefinementStart start;
+  if (!error.empty() || !PrepareRefinement(this, inputs, this->Landmarks, threads, start, error))
   {
-    vtkErrorMacro(<< error);
+    if (!error.empty())
+    {
+      vtkErrorMacro(<< error);
+    }
     return 0;
   }
-  const std::chrono::duration<double> basisTime = std::chrono::steady_clock::now() - basisStart;
-  this->UpdateProgress(0.5);
-  if (this->GetAbortExecute())
-  {
-    return 0;
-  }
-  mobius::SphericalPointLocator locator;
-  if (!locator.Build(maps[1].Sphere, maps[1].Triangles, error))
-  {
-    vtkErrorMacro(<< InputError(1, error));
-    return 0;
-  }
-  std::vector<std::pair<mobius::Index, mobius::Index>> landmarks;
-  error = LandmarkVertices(this->Landmarks, surfaces, landmarks);
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< error);
-    return 0;
-  }
-  const std::vector<mobius::RotationMatrix> starts =
-    CandidateStarts(inputs[0], this->SearchCandidates);
-  error = CheckCandidate(this->Candidate, starts.size());
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< error);
-    return 0;
-  }
-  const mobius::RefinedCorrespondence refined = mobius::RefineCorrespondence(surfaces[0],
-    surfaces[1],
-    { maps[0].Sphere, maps[1].Sphere, maps[1].Triangles, locator, starts, BestReflects(inputs[0]),
-      landmarks },
-    RefinementOptions(this, threads));
+  const mobius::RefinedCorrespondence refined =
+    mobius::RefineCorrespondence(start.Surfaces[0], start.Surfaces[1],
+      { start.Maps[0].Sphere, start.Maps[1].Sphere, start.Maps[1].Triangles, start.Locator,
+        start.Starts, BestReflects(inputs[0]), start.Landmarks },
+      RefinementOptions(this, threads));
   if (refined.Stopped)
   {
     return 0;
   }
   WarnAboutRefinement(this, inputs[0], refined);
-  AssembleOutput(this, inputs, maps, refined, output);
-  const double stageSeconds[4] = { basisTime.count(), refined.CandidateSeconds,
+  AssembleOutput(this, inputs, start.Maps, refined, output);
+  const double stageSeconds[4] = { start.SurfaceSeconds, refined.CandidateSeconds,
     refined.ExtensionSeconds, refined.PolishSeconds };
-  AddRefinementFieldData(refined, this->Candidate, maps[0],
-    this->RecordTimings ? stageSeconds : nullptr, stored, threads, output);
+  AddRefinementFieldData(refined, this->Candidate, start.Maps[0],
+    this->RecordTimings ? stageSeconds : nullptr, start.Stored, threads, output);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -16,11 +16,10 @@ vtkStandardNewMacro(vtkLaplaceBeltramiBasis);
 int vtkLaplaceBeltramiBasis::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  if (!this->GetInputAndOutput(inputVector, outputVector, input, output))
   {
-    vtkErrorMacro(<< "Missing input or output polydata.");
     return 0;
   }
   // The surface exactly as vtkCorrespondenceRefinement reads it, so that the fingerprints

@@ -76,11 +76,10 @@ vtkMobiusCenter::vtkMobiusCenter()
 int vtkMobiusCenter::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  if (!this->GetInputAndOutput(inputVector, outputVector, input, output))
   {
-    vtkErrorMacro(<< "Missing input or output polydata.");
     return 0;
   }
   mobius::Points points;

@@ -47,6 +47,25 @@ int vtkMobiusPolyDataAlgorithm::RequestData(
 }
 
 //------------------------------------------------------------------------------
+bool vtkMobiusPolyDataAlgorithm::GetInputAndOutput(vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, vtkPolyData*& input, vtkPolyData*& output, const char* task)
+{
+  input = vtkPolyData::GetData(inputVector[0]);
+  output = vtkPolyData::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "Missing input or output polydata.");
+    return false;
+  }
+  if (task && input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro(<< "Cannot " << task << ": the input is empty.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 vtkSmartPointer<vtkPolyData> vtkMobiusPolyDataAlgorithm::RunInternalFilter(
   vtkPolyDataAlgorithm* filter, double begin, double end, std::string& error,
   std::vector<std::string>& warnings)

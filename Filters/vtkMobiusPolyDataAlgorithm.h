@@ -62,6 +62,16 @@ protected:
   virtual std::string SettingsError() { return {}; }
 
   /**
+   * The polydata of input port 0 and of the output, or false after reporting why not: the
+   * error "Missing input or output polydata." when one is missing and, given the filter's
+   * `task` ("detect symmetry"), "Cannot <task>: the input is empty." when the input has no
+   * points (an input with no points and no cells never gets here: RequestData gives it an
+   * empty output, without an error).
+   */
+  bool GetInputAndOutput(vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+    vtkPolyData*& input, vtkPolyData*& output, const char* task = nullptr);
+
+  /**
    * Runs `filter` as a stage of this filter, its progress the slice [begin, end] of this
    * filter's. Returns its output, or null when it reported an error (`error`, as a
    * sentence), produced no points (`error` empty) or this filter was aborted. Its warnings

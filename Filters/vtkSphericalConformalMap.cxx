@@ -314,10 +314,13 @@ vtkSphericalConformalMap::vtkSphericalConformalMap()
 int vtkSphericalConformalMap::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  const std::string inputError =
-    !input || !output ? "Missing input or output polydata." : CheckInput(this, input);
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  if (!this->GetInputAndOutput(inputVector, outputVector, input, output))
+  {
+    return 0;
+  }
+  const std::string inputError = CheckInput(this, input);
   if (!inputError.empty())
   {
     vtkErrorMacro(<< inputError);

@@ -128,6 +128,24 @@ mobius::SphericalOrbifoldMapParameters OrbifoldParameters(vtkAlgorithm* filter, 
   return parameters;
 }
 
+// Reports a failed orbifold map (an error) or one with flipped triangles on the covering (a
+// warning); false when it failed.
+bool ReportOrbifoldResult(vtkAlgorithm* filter, const mobius::SphericalOrbifoldMapResult& result)
+{
+  if (!result.Success)
+  {
+    vtkErrorWithObjectMacro(
+      filter, << "Cannot compute an orbifold map: " << result.Message << ".");
+    return false;
+  }
+  if (result.FlippedTriangles > 0)
+  {
+    vtkWarningWithObjectMacro(filter, << "The orbifold map has " << result.FlippedTriangles
+                                      << " flipped triangles on the covering.");
+  }
+  return true;
+}
+
 // The output mesh with its point arrays (surface points, input point ids, copies) and cell
 // arrays (surface areas, copies).
 void WriteOrbifoldMesh(
@@ -228,16 +246,10 @@ vtkSmartPointer<vtkPolyData> vtkSphericalOrbifoldMap::SphericalMapOf(
 int vtkSphericalOrbifoldMap::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  if (!this->GetInputAndOutput(inputVector, outputVector, input, output, "compute an orbifold map"))
   {
-    vtkErrorMacro(<< "Missing input or output polydata.");
-    return 0;
-  }
-  if (input->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro(<< "Cannot compute an orbifold map: the input is empty.");
     return 0;
   }
   // The parameters first: a bad one fails at once, before any flow runs. Cones are named
@@ -258,8 +270,7 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
   }
   this->UpdateProgress(0.2);
   OrbifoldInputs in;
-  mobius::SphericalOrbifoldMapParameters parameters =
-    OrbifoldParameters(this, this->NumberOfCopies);
+  auto parameters = OrbifoldParameters(this, this->NumberOfCopies);
   const std::string error = ExtractOrbifoldInputs(map, this->ConeIds, in, parameters.Cones);
   if (!error.empty())
   {
@@ -272,15 +283,9 @@ int vtkSphericalOrbifoldMap::ComputeOutput(
   {
     return 1;
   }
-  if (!result.Success)
+  if (!ReportOrbifoldResult(this, result))
   {
-    vtkErrorMacro(<< "Cannot compute an orbifold map: " << result.Message << ".");
     return 0;
-  }
-  if (result.FlippedTriangles > 0)
-  {
-    vtkWarningMacro(<< "The orbifold map has " << result.FlippedTriangles
-                    << " flipped triangles on the covering.");
   }
   WriteOrbifoldMesh(output,
     mobius::SelectOrbifoldOutput(result, in.Surface, in.Triangles, this->OutputCovering), in);

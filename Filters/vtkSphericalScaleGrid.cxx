@@ -128,6 +128,72 @@ vtkNew<vtkDoubleArray> MakeCellArray(const char* name, const std::vector<double>
   }
   return array;
 }
+
+// The input map's scale-factor signal; false after reporting the error (none when the
+// filter was aborted).
+bool SampleScaleFactors(vtkSphericalScaleGrid* filter, vtkPolyData* input, int threads,
+  mobius::ScaleFactorSignal& signal)
+{
+  mobius::Points points;
+  mobius::Triangles triangles;
+  mobius::Vector areas;
+  std::string error = mobius::vtk::ExtractSphericalMap(input, false, points, triangles, areas);
+  if (!error.empty())
+  {
+    vtkErrorWithObjectMacro(filter, << "Cannot sample the scale factors: " << error << ".");
+    return false;
+  }
+  mobius::ScaleFactorSignalParameters parameters;
+  parameters.Resolution = filter->GetResolution();
+  parameters.NumberOfThreads = threads;
+  parameters.SmoothingTime = filter->GetSmoothingTime();
+  parameters.Value = filter->GetValueMode() == vtkSphericalScaleGrid::AREA_RATIO
+    ? mobius::ScaleFactorValue::AreaRatio
+    : mobius::ScaleFactorValue::SquareRootAreaRatio;
+  auto progress = [filter](double fraction) {
+    filter->UpdateProgress(0.9 * fraction);
+    return !filter->GetAbortExecute();
+  };
+  if (!mobius::ComputeScaleFactorSignal(
+        points, triangles, areas, parameters, true, signal, error, progress))
+  {
+    if (!filter->GetAbortExecute())
+    {
+      vtkErrorWithObjectMacro(filter, << "Cannot sample the scale factors: " << error << ".");
+    }
+    return false;
+  }
+  return true;
+}
+
+// The grid sphere with its cell arrays.
+void WriteGrid(
+  vtkSphericalScaleGrid* filter, const mobius::ScaleFactorSignal& signal, vtkPolyData* output)
+{
+  const GridPointIds ids{ filter->GetResolution() };
+  output->SetPoints(
+    MakeGridPoints(ids, filter->GetDisplaceByValue() ? &signal.SmoothedValues : nullptr));
+  output->SetPolys(MakeGridCells(ids));
+  output->GetCellData()->AddArray(MakeCellArray("ConformalFactor", signal.Grid.Values));
+  auto smoothed = MakeCellArray("ConformalFactorSmoothed", signal.SmoothedValues);
+  output->GetCellData()->AddArray(smoothed);
+  output->GetCellData()->SetActiveScalars("ConformalFactorSmoothed");
+}
+
+// The grid's settings and measures as field data.
+void WriteGridFields(vtkSphericalScaleGrid* filter, const mobius::ScaleFactorSignal& signal,
+  int threads, vtkFieldData* fieldData)
+{
+  mobius::vtk::SetFieldInteger(fieldData, "Resolution", filter->GetResolution());
+  mobius::vtk::SetFieldInteger(fieldData, "Bandwidth", filter->GetResolution() / 2);
+  mobius::vtk::SetFieldValue(fieldData, "TotalArea", signal.Grid.TotalArea);
+  mobius::vtk::SetFieldValue(fieldData, "SmoothingTime", filter->GetSmoothingTime());
+  mobius::vtk::SetFieldInteger(fieldData, "ValueMode", filter->GetValueMode());
+  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
+  const std::vector<double> energies = mobius::DegreeEnergies(signal.Coefficients);
+  mobius::vtk::SetFieldValues(
+    fieldData, "DegreeEnergies", energies.data(), static_cast<int>(energies.size()));
+}
 }
 
 //------------------------------------------------------------------------------
@@ -137,69 +203,26 @@ vtkSphericalScaleGrid::vtkSphericalScaleGrid() = default;
 int vtkSphericalScaleGrid::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  if (!this->GetInputAndOutput(inputVector, outputVector, input, output))
   {
-    vtkErrorMacro(<< "Missing input or output polydata.");
     return 0;
   }
-  if (this->Resolution < 4 || this->Resolution % 2 != 0)
+  const std::string badResolution = mobius::CheckGridResolution(this->Resolution);
+  if (!badResolution.empty())
   {
-    vtkErrorMacro(<< "Resolution must be even and at least 4 (it is " << this->Resolution << ").");
+    vtkErrorMacro(<< badResolution << ".");
     return 0;
   }
-  mobius::Points points;
-  mobius::Triangles triangles;
-  mobius::Vector areas;
-  std::string error = mobius::vtk::ExtractSphericalMap(input, false, points, triangles, areas);
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< "Cannot sample the scale factors: " << error << ".");
-    return 0;
-  }
-
   const int threads = mobius::ResolveThreadCount(this->NumberOfThreads);
-  mobius::ScaleFactorSignalParameters parameters;
-  parameters.Resolution = this->Resolution;
-  parameters.NumberOfThreads = threads;
-  parameters.SmoothingTime = this->SmoothingTime;
-  parameters.Value = this->ValueMode == AREA_RATIO ? mobius::ScaleFactorValue::AreaRatio
-                                                   : mobius::ScaleFactorValue::SquareRootAreaRatio;
   mobius::ScaleFactorSignal signal;
-  auto progress = [this](double fraction) {
-    this->UpdateProgress(0.9 * fraction);
-    return !this->GetAbortExecute();
-  };
-  if (!mobius::ComputeScaleFactorSignal(
-        points, triangles, areas, parameters, true, signal, error, progress))
+  if (!SampleScaleFactors(this, input, threads, signal))
   {
-    if (!this->GetAbortExecute())
-    {
-      vtkErrorMacro(<< "Cannot sample the scale factors: " << error << ".");
-    }
     return 0;
   }
-
-  const GridPointIds ids{ this->Resolution };
-  output->SetPoints(
-    MakeGridPoints(ids, this->DisplaceByValue ? &signal.SmoothedValues : nullptr));
-  output->SetPolys(MakeGridCells(ids));
-  output->GetCellData()->AddArray(MakeCellArray("ConformalFactor", signal.Grid.Values));
-  auto smoothed = MakeCellArray("ConformalFactorSmoothed", signal.SmoothedValues);
-  output->GetCellData()->AddArray(smoothed);
-  output->GetCellData()->SetActiveScalars("ConformalFactorSmoothed");
-
-  vtkFieldData* fieldData = output->GetFieldData();
-  mobius::vtk::SetFieldInteger(fieldData, "Resolution", this->Resolution);
-  mobius::vtk::SetFieldInteger(fieldData, "Bandwidth", this->Resolution / 2);
-  mobius::vtk::SetFieldValue(fieldData, "TotalArea", signal.Grid.TotalArea);
-  mobius::vtk::SetFieldValue(fieldData, "SmoothingTime", this->SmoothingTime);
-  mobius::vtk::SetFieldInteger(fieldData, "ValueMode", this->ValueMode);
-  mobius::vtk::SetFieldInteger(fieldData, "NumberOfThreadsUsed", threads);
-  const std::vector<double> energies = mobius::DegreeEnergies(signal.Coefficients);
-  mobius::vtk::SetFieldValues(
-    fieldData, "DegreeEnergies", energies.data(), static_cast<int>(energies.size()));
+  WriteGrid(this, signal, output);
+  WriteGridFields(this, signal, threads, output->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;
 }

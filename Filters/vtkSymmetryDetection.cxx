@@ -2,6 +2,7 @@
 
 #include "MobiusPipeline.h"
 #include "RegistrationParameters.h"
+#include "ScaleFactorSignal.h"
 #include "ParallelFor.h"
 #include "SymmetryMeasures.h"
 #include "VertexSnapping.h"
@@ -207,6 +208,25 @@ void AddAsymmetryArray(vtkPolyData* output, const mobius::Vector& asymmetry)
   output->GetPointData()->SetActiveScalars("Asymmetry");
 }
 
+// The symmetric map (AssembleSymmetricMap; a warning about arrays it could not carry) with
+// its point array Asymmetry, which it returns.
+mobius::Vector WriteSymmetricMap(vtkSymmetryDetection* filter, vtkPolyData* output,
+  vtkPolyData* reflected, vtkPolyData* centered, vtkPolyData* symmetric,
+  const SymmetryGeometry& geometry, const mobius::vtk::SurfaceLocations& locations)
+{
+  const std::string arrayWarning =
+    AssembleSymmetricMap(output, reflected, centered, symmetric, locations);
+  if (!arrayWarning.empty())
+  {
+    vtkWarningWithObjectMacro(filter, << arrayWarning << ".");
+  }
+  const mobius::Vector asymmetry = mobius::RelativeMirrorAsymmetry(geometry.Surface,
+    geometry.Triangles, geometry.Areas, locations.Triangle, locations.Barycentric,
+    MappedPointsOf(output));
+  AddAsymmetryArray(output, asymmetry);
+  return asymmetry;
+}
+
 // The distance and the plane of every candidate reflection, best first, and the asymmetry's
 // mean and maximum.
 void WriteSymmetryFields(vtkFieldData* fieldData, const mobius::MirrorCandidates& candidates,
@@ -243,22 +263,17 @@ vtkSymmetryDetection::vtkSymmetryDetection()
 int vtkSymmetryDetection::ComputeOutput(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  if (!this->GetInputAndOutput(inputVector, outputVector, input, output, "detect symmetry"))
   {
-    vtkErrorMacro(<< "Missing input or output polydata.");
     return 0;
   }
-  if (input->GetNumberOfPoints() == 0)
+  const std::string badResolution =
+    mobius::CheckGridResolution(this->Resolution, mobius::MinimumResolution);
+  if (!badResolution.empty())
   {
-    vtkErrorMacro(<< "Cannot detect symmetry: the input is empty.");
-    return 0;
-  }
-  if (this->Resolution < mobius::MinimumResolution || this->Resolution % 2 != 0)
-  {
-    vtkErrorMacro(<< "Resolution must be even and at least " << mobius::MinimumResolution
-                  << " (it is " << this->Resolution << ").");
+    vtkErrorMacro(<< badResolution << ".");
     return 0;
   }
   vtkSmartPointer<vtkPolyData> centered = this->CenteredMapOf(input);
@@ -284,16 +299,8 @@ int vtkSymmetryDetection::ComputeOutput(
     vtkErrorMacro(<< "Cannot detect symmetry: " << error << ".");
     return 0;
   }
-  const std::string arrayWarning =
-    AssembleSymmetricMap(output, reflected, centered, symmetric, locations);
-  if (!arrayWarning.empty())
-  {
-    vtkWarningMacro(<< arrayWarning << ".");
-  }
-  const mobius::Vector asymmetry = mobius::RelativeMirrorAsymmetry(geometry.Surface,
-    geometry.Triangles, geometry.Areas, locations.Triangle, locations.Barycentric,
-    MappedPointsOf(output));
-  AddAsymmetryArray(output, asymmetry);
+  const mobius::Vector asymmetry =
+    WriteSymmetricMap(this, output, reflected, centered, symmetric, geometry, locations);
   vtkFieldData* fieldData = output->GetFieldData();
   WriteSymmetryFields(fieldData, candidates, asymmetry);
   mobius::vtk::SetFieldInteger(fieldData, "SymmetryCentered", this->Centering ? 1 : 0);

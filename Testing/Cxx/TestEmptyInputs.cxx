@@ -90,5 +90,17 @@ int TestEmptyInputs(int, char*[])
   vtkNew<vtkSphericalConformalMap> noCells;
   noCells->SetInputData(pointsOnly);
   failures += ExpectError(noCells, "no triangles");
+
+  // Nor is one with cells but no points: the filters that need points say so.
+  vtkNew<vtkPoints> noPoints;
+  vtkNew<vtkPolyData> cellsOnly;
+  cellsOnly->SetPoints(noPoints);
+  cellsOnly->SetPolys(mobius_test::BumpyMesh(1)->GetPolys());
+  vtkNew<vtkSymmetryDetection> symmetryOfNothing;
+  symmetryOfNothing->SetInputData(cellsOnly);
+  failures += ExpectError(symmetryOfNothing, "Cannot detect symmetry: the input is empty.");
+  vtkNew<vtkSphericalOrbifoldMap> orbifoldOfNothing;
+  orbifoldOfNothing->SetInputData(cellsOnly);
+  failures += ExpectError(orbifoldOfNothing, "Cannot compute an orbifold map: the input is empty.");
   return failures == 0 ? 0 : 1;
 }

@@ -13,6 +13,7 @@
 #include <array>
 #include <chrono>
 #include <limits>
+#include <sstream>
 
 namespace mobius
 {
@@ -530,5 +531,44 @@ RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,
   refined.ExtensionSeconds = kept.ExtensionSeconds;
   refined.PolishSeconds = kept.PolishSeconds;
   return refined;
+}
+
+std::string CheckBasisSizes(int startBasisSize, int basisSize)
+{
+  if (startBasisSize <= basisSize)
+  {
+    return std::string();
+  }
+  std::ostringstream message;
+  message << "StartBasisSize (" << startBasisSize << ") must not exceed BasisSize (" << basisSize
+          << ").";
+  return message.str();
+}
+
+std::vector<RotationMatrix> CandidateStarts(
+  const RotationMatrix& best, const std::vector<RotationMatrix>& candidates)
+{
+  std::vector<RotationMatrix> starts{ RotationMatrix::Identity() };
+  for (const RotationMatrix& transform : candidates)
+  {
+    if (!transform.allFinite() || (transform - best).norm() < 1e-9)
+    {
+      continue; // the best one is already first
+    }
+    starts.emplace_back(transform * best.transpose());
+  }
+  return starts;
+}
+
+std::string CheckCandidate(int candidate, size_t count)
+{
+  if (candidate < static_cast<int>(count))
+  {
+    return std::string();
+  }
+  std::ostringstream message;
+  message << "Candidate " << candidate << " does not exist: the registration has " << count
+          << " candidate" << (count == 1 ? "" : "s") << " (0.." << count - 1 << ").";
+  return message.str();
 }
 }

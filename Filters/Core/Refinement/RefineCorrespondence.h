@@ -99,6 +99,20 @@ struct RefinedCorrespondence
   bool Stopped = false;
 };
 
+/// Empty when the basis sizes fit together (the ZoomOut starts at most at the full size),
+/// else the error, a sentence naming the filter's settings StartBasisSize and BasisSize.
+std::string CheckBasisSizes(int startBasisSize, int basisSize);
+
+/// The rotations of the aligned source (its points turned by `best`) that reach each
+/// candidate transform T: T best^-1 = T best^T (transforms are orthogonal), the identity (the
+/// best one) first. A non-finite candidate, and the best one repeated, are left out.
+std::vector<RotationMatrix> CandidateStarts(
+  const RotationMatrix& best, const std::vector<RotationMatrix>& candidates);
+
+/// Empty when `candidate` (-1: none given) is one of the registration's `count` candidates,
+/// else the error, a sentence.
+std::string CheckCandidate(int candidate, size_t count);
+
 /// Refines the correspondence between `source` and `target` (prepared with
 /// PrepareSpectralSurface on the surfaces of the registered spheres).
 RefinedCorrespondence RefineCorrespondence(const SpectralSurface& source,

@@ -17,12 +17,10 @@ namespace
 // memory; a warning when it is coarse enough to turn the map.
 std::string CheckResolution(int resolution, std::vector<std::string>& warnings)
 {
-  std::ostringstream message;
-  if (resolution < MinimumResolution || resolution % 2 != 0)
+  const std::string tooCoarse = CheckGridResolution(resolution, MinimumResolution);
+  if (!tooCoarse.empty())
   {
-    message << "Resolution must be even and at least " << MinimumResolution << " (it is "
-            << resolution << "): a coarser grid cannot tell the rotation.";
-    return message.str();
+    return tooCoarse + ": a coarser grid cannot tell the rotation.";
   }
   if (resolution < ReliableResolution)
   {
@@ -33,6 +31,7 @@ std::string CheckResolution(int resolution, std::vector<std::string>& warnings)
     warnings.push_back(warning.str());
   }
   const double memory = PhysicalMemoryBytes();
+  std::ostringstream message;
   if (memory > 0 && AlignmentMemoryEstimate(resolution) > memory)
   {
     message << "Resolution " << resolution << " needs about "

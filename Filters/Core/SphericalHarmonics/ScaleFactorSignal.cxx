@@ -1,9 +1,22 @@
 #include "ScaleFactorSignal.h"
 
+#include <sstream>
 #include <stdexcept>
 
 namespace mobius
 {
+std::string CheckGridResolution(int resolution, int minimum)
+{
+  if (resolution >= minimum && resolution % 2 == 0)
+  {
+    return std::string();
+  }
+  std::ostringstream message;
+  message << "Resolution must be even and at least " << minimum << " (it is " << resolution
+          << ")";
+  return message.str();
+}
+
 bool ComputeScaleFactorSignal(const Points& spherePoints, const Triangles& triangles,
   const Vector& triangleAreas, const ScaleFactorSignalParameters& parameters,
   bool computeSmoothedValues, ScaleFactorSignal& signal, std::string& error,

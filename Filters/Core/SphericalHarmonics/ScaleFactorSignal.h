@@ -39,6 +39,12 @@ struct ScaleFactorSignal
   std::vector<double> SmoothedValues;
 };
 
+/// Empty when the grid size `resolution` is even and at least `minimum` (a caller may need a
+/// finer grid than MinimumGridResolution), else "Resolution must be even and at least
+/// <minimum> (it is <resolution>)": the one wording of this rule for the filters' and
+/// the alignment's Resolution.
+std::string CheckGridResolution(int resolution, int minimum = MinimumGridResolution);
+
 /// Rasterizes, transforms and smooths. Returns false with `error` naming the problem.
 bool ComputeScaleFactorSignal(const Points& spherePoints, const Triangles& triangles,
   const Vector& triangleAreas, const ScaleFactorSignalParameters& parameters,

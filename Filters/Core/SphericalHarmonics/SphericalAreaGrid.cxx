@@ -601,9 +601,10 @@ bool Validate(const Points& points, const Triangles& triangles, const Vector& ar
   std::string& error)
 {
   std::ostringstream message;
-  if (resolution < 4 || resolution % 2 != 0)
+  if (resolution < MinimumGridResolution || resolution % 2 != 0)
   {
-    message << "grid resolution must be even and at least 4 (got " << resolution << ")";
+    message << "grid resolution must be even and at least " << MinimumGridResolution << " (got "
+            << resolution << ")";
     error = message.str();
     return false;
   }

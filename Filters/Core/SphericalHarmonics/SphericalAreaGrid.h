@@ -19,6 +19,9 @@
 
 namespace mobius
 {
+/// The smallest grid size N: the grid has N x N cells, N even.
+inline constexpr int MinimumGridResolution = 4;
+
 /// What a cell stores: the area ratio lambda, or sqrt(lambda) (the authors' choice, so that
 /// the integral of f^2 over the sphere is the total area).
 enum class ScaleFactorValue
