@@ -199,6 +199,13 @@ std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element
     std::istringstream fields(line);
     std::string keyword;
     fields >> keyword;
+    // VTK's reader takes the first word of every header line without checking that there
+    // is one: an empty line made it read through a null pointer (found by the fuzzer).
+    if (keyword.empty())
+    {
+      return "malformed PLY header line " + std::to_string(number) +
+        ": an empty line, which VTK's PLY reader cannot read (remove it)";
+    }
     if (keyword == "end_header")
     {
       if (!haveFormat)
@@ -261,7 +268,7 @@ std::string ReadHeader(std::istream& in, Encoding& encoding, std::vector<Element
       elements.back().Properties.push_back(property);
       elements.back().HeaderLines += line + '\n';
     }
-    else if (!keyword.empty() && keyword != "comment" && keyword != "obj_info")
+    else if (keyword != "comment" && keyword != "obj_info")
     {
       return malformed.str();
     }
